@@ -1,0 +1,301 @@
+// Normal Vector Voting (Page, Sun, Koschan, Paik, Abidi: "Normal Vector Voting: Crease
+// Detection and Curvature Estimation on Large, Noisy Meshes", Graphical Models 64, 2002).
+//
+// Entry point, in the manner of vcglib's tri::UpdateCurvature:
+//
+//   std::vector<nvv::VertexResult> res;
+//   nvv::Summary sum;
+//   nvv::Status st = vcg::tri::NormalVectorVoting<MyMesh>::Compute(m, params, res, sum, cb);
+//
+// Inputs:  m       any vcglib triangle mesh (read only: the mesh is never modified)
+//          params  see params.h (k in mean edge lengths, crease / corner angles, fit, ...)
+//          cb      progress, called from the calling thread only; returning false cancels
+// Outputs: res     one VertexResult per slot of m.vert (deleted slots are Invalid)
+//          sum     counts per class, ranges, radius, timings, warnings about the input
+// On refusal or cancellation res is empty and the Status says why.
+//
+// Pass 1 (normal_votes.h) classifies every vertex and gives its normal; pass 2 gives the
+// curvature of SURFACE vertices (curvature_votes.h, sheet_fit.h) and of CREASE lines
+// (crease_curvature.h). Each pass is parallel over vertices (OpenMP); every vertex's result
+// depends only on pass-1 results and its own march, so any thread count gives the same bits.
+#ifndef NVV_CORE_NORMAL_VECTOR_VOTING_H
+#define NVV_CORE_NORMAL_VECTOR_VOTING_H
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "crease_curvature.h"
+#include "curvature_votes.h"
+#include "geodesic_march.h"
+#include "normal_votes.h"
+#include "params.h"
+#include "sheet_fit.h"
+#include "surface_graph.h"
+#include "vertex_result.h"
+
+namespace nvv {
+
+// Progress in percent with a short text; return false to cancel. A vcg::CallBackPos*
+// converts to it.
+typedef std::function<bool(int, const char*)> Progress;
+
+struct Status {
+  bool ok = false;
+  bool cancelled = false;
+  std::string message;  // why it was refused, empty when ok
+};
+
+namespace detail {
+
+// Shared progress / cancellation state of one parallel pass. Only thread 0 (the caller's
+// thread) calls the user's callback: GUIs pump their event loop inside it.
+class PassProgress {
+ public:
+  PassProgress(const Progress& cb, int n, int percentFrom, int percentTo, const char* text)
+      : cb_(cb), n_(n), from_(percentFrom), to_(percentTo), text_(text) {}
+  bool Cancelled() const { return cancelled_.load(std::memory_order_relaxed); }
+  void Cancel() { cancelled_.store(true); }
+  // Called by each thread after each vertex.
+  void Tick(bool mainThread) {
+    const int done = done_.fetch_add(1, std::memory_order_relaxed) + 1;
+    if (!mainThread || !cb_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::milliseconds(100)) return;
+    last_ = now;
+    const int percent = from_ + int((to_ - from_) * double(done) / std::max(1, n_));
+    if (!cb_(percent, text_)) Cancel();
+  }
+
+ private:
+  const Progress& cb_;
+  const int n_, from_, to_;
+  const char* text_;
+  std::atomic<int> done_{0};
+  std::atomic<bool> cancelled_{false};
+  std::chrono::steady_clock::time_point last_{};
+};
+
+inline int ThreadCount(int requested) {
+#ifdef _OPENMP
+  return requested > 0 ? requested : omp_get_max_threads();
+#else
+  (void)requested;
+  return 1;
+#endif
+}
+inline int ThreadId() {
+#ifdef _OPENMP
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
+inline double Seconds(std::chrono::steady_clock::time_point a) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
+}
+
+// Runs body(v, march, scratch) for every vertex in parallel; false if cancelled or failed.
+template <class Scratch, class Body>
+bool ParallelOverVertices(const SurfaceGraph& g, int threads, PassProgress& progress, Body body) {
+  const int n = g.VertexCount();
+  std::atomic<bool> failed{false};
+#pragma omp parallel num_threads(threads)
+  {
+    try {
+      GeodesicMarch march(g);
+      Scratch scratch;
+      const bool mainThread = ThreadId() == 0;
+#pragma omp for schedule(dynamic, 64)
+      for (int v = 0; v < n; ++v) {
+        if (progress.Cancelled() || failed.load(std::memory_order_relaxed)) continue;
+        body(v, march, scratch);
+        progress.Tick(mainThread);
+      }
+    } catch (...) {  // e.g. bad_alloc: never let an exception cross the OpenMP region
+      failed.store(true);
+    }
+  }
+  if (failed.load()) progress.Cancel();
+  return !progress.Cancelled();
+}
+
+struct Pass2Scratch {
+  std::vector<CurvatureVote> votes;
+  std::vector<SheetSample> samples;
+};
+
+}  // namespace detail
+
+// Both passes on a prepared graph. Results are indexed like the graph's vertices.
+inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std::vector<VertexResult>& res,
+                                    Summary& sum, const Progress& cb = Progress()) {
+  using namespace detail;
+  const auto t0 = std::chrono::steady_clock::now();
+  Status st;
+  res.clear();
+  sum = Summary();
+  sum.vertices = g.pos.size();
+  sum.nonFiniteVertices = g.nonFinite;
+  sum.unreferencedVertices = g.unreferenced;
+  sum.degenerateFaces = g.degenerate;
+  sum.droppedFaces = g.dropped;
+  sum.consistentlyOriented = g.consistentlyOriented;
+  sum.meanEdge = g.meanEdge;
+  st.message = ValidateParams(p);
+  if (!st.message.empty()) return st;
+  if (g.VertexCount() == 0) { st.message = "The mesh is empty."; return st; }
+  if (g.FaceCount() == 0) {
+    st.message = "The mesh has no usable triangles (a point cloud, or every face is deleted, "
+                 "repeats a vertex or has a non-finite coordinate): normal vector voting needs faces.";
+    return st;
+  }
+  if (!(g.maxArea > 0) || !(g.meanEdge > 0) || !std::isfinite(g.meanEdge)) {
+    st.message = "Every triangle of the mesh has zero area: there is no surface to vote on.";
+    return st;
+  }
+
+  Pass1Settings s1;
+  s1.radius = p.absoluteRadius > 0 ? p.absoluteRadius : p.k * g.meanEdge;
+  s1.sigma = p.sigmaFraction * s1.radius;
+  s1.epsilon = EpsilonFromAngle(p.creaseAngleDeg);
+  s1.eta = EpsilonFromAngle(p.cornerAngleDeg);
+  s1.signAware = p.classRule == ClassRule::SignAware && g.consistentlyOriented;
+  s1.maxNeighbourhood = p.maxNeighbourhood;
+  if (!std::isfinite(s1.radius) || !(s1.radius > 0)) {
+    st.message = "The neighbourhood radius is not a positive finite number for this mesh.";
+    return st;
+  }
+  sum.radius = s1.radius;
+  sum.epsilon = s1.epsilon;
+  sum.eta = s1.eta;
+  sum.signAwareUsed = s1.signAware;
+  if (p.classRule == ClassRule::SignAware && !g.consistentlyOriented)
+    sum.warnings.push_back("The faces are not consistently oriented: the paper's classification rule "
+                           "was used instead of the sign-aware one (creases above 120 degrees may be missed).");
+
+  const int threads = ThreadCount(p.threads);
+  std::vector<VertexResult> out(g.VertexCount());
+
+  // Pass 1: classes and normals.
+  {
+    PassProgress prog(cb, g.VertexCount(), 0, 50, "Normal vector voting: normals and classes");
+    struct None {};
+    const bool done = ParallelOverVertices<None>(g, threads, prog, [&](int v, GeodesicMarch& march, None&) {
+      VoteNormal(g, march, v, s1, out[v]);
+    });
+    if (!done) { st.cancelled = true; st.message = "Cancelled."; return st; }
+  }
+  sum.secondsPass1 = Seconds(t0);
+  const auto t1 = std::chrono::steady_clock::now();
+
+  // Pass 2: curvature of surface vertices, curvature along creases.
+  {
+    const double cosPhi = std::cos(DegToRad(p.creaseAngleDeg));
+    const double slopeWeight = 2.0 * g.meanEdge;
+    PassProgress prog(cb, g.VertexCount(), 50, 100, "Normal vector voting: curvature");
+    auto notSurface = [&](int x) { return out[x].cls != VertexClass::Surface; };
+    const bool done = ParallelOverVertices<Pass2Scratch>(g, threads, prog,
+        [&](int v, GeodesicMarch& march, Pass2Scratch& sc) {
+      VertexResult& r = out[v];
+      if (r.cls == VertexClass::Crease) {
+        if (!march.Run(v, s1.radius, s1.maxNeighbourhood)) r.flags |= kNeighbourhoodCapped;
+        r.creaseCurvature = float(CreaseCurvature(march, out, v, s1.sigma));
+        return;
+      }
+      if (r.cls != VertexClass::Surface) return;
+      bool complete = p.stopAtCreases ? march.Run(v, s1.radius, s1.maxNeighbourhood, notSurface)
+                                      : march.Run(v, s1.radius, s1.maxNeighbourhood);
+      if (!complete) r.flags |= kNeighbourhoodCapped;
+      const TangentFrame F(ToVec(r.normal).normalized());
+      PrincipalCurvatures pc;
+      if (p.fit == CurvatureFit::SheetQuadric) {
+        sc.samples.clear();
+        for (int x : march.Reached()) {
+          if (out[x].cls != VertexClass::Surface) continue;
+          sc.samples.push_back({g.pos[x] - g.pos[v], ToVec(out[x].normal)});
+        }
+        pc = SheetQuadricFit(F, sc.samples, s1.radius, slopeWeight, cosPhi);
+      } else {
+        sc.votes.clear();
+        for (int x : march.Reached()) {
+          if (x == v || out[x].cls != VertexClass::Surface) continue;
+          const double gi = march.Distance(x);
+          CurvatureVote vote;
+          if (CurvatureVoteOf(F, g.pos[x] - g.pos[v], ToVec(out[x].normal), gi, std::exp(-gi / s1.sigma), vote))
+            sc.votes.push_back(vote);
+        }
+        pc = p.fit == CurvatureFit::PaperTaubin ? TaubinFromVotes(F, sc.votes) : EulerFromVotes(F, sc.votes);
+      }
+      if (!pc.ok) return;
+      r.k1 = float(pc.k1);
+      r.k2 = float(pc.k2);
+      for (int j = 0; j < 3; ++j) {
+        r.t1[j] = float(pc.t1[j]);
+        r.t2[j] = float(pc.t2[j]);
+      }
+      r.flags |= kCurvatureValid;
+    });
+    if (!done) { st.cancelled = true; st.message = "Cancelled."; return st; }
+  }
+  sum.secondsPass2 = Seconds(t1);
+  // Fitted normals are written after the pass, so every vertex's fit saw pass-1 normals only.
+  // (SheetQuadricFit's refined normal is recomputed here cheaply from t1 x t2.)
+  bool first = true;
+  for (auto& r : out) {
+    ++sum.perClass[int(r.cls)];
+    if (r.Has(kNeighbourhoodCapped)) ++sum.capped;
+    if (!r.Has(kCurvatureValid)) continue;
+    if (p.fit == CurvatureFit::SheetQuadric) {
+      const Eigen::Vector3d n = ToVec(r.t1).cross(ToVec(r.t2)).normalized();
+      for (int j = 0; j < 3; ++j) r.normal[j] = float(n[j]);
+    }
+    if (first) { sum.k1Min = sum.k1Max = r.k1; sum.k2Min = sum.k2Max = r.k2; first = false; }
+    sum.k1Min = std::min<double>(sum.k1Min, r.k1);
+    sum.k1Max = std::max<double>(sum.k1Max, r.k1);
+    sum.k2Min = std::min<double>(sum.k2Min, r.k2);
+    sum.k2Max = std::max<double>(sum.k2Max, r.k2);
+  }
+  if (sum.capped > 0)
+    sum.warnings.push_back(std::to_string(sum.capped) + " vertices reached the neighbourhood cap of " +
+                           std::to_string(p.maxNeighbourhood) + " vertices; their neighbourhood was truncated.");
+  if (g.nonFinite > 0)
+    sum.warnings.push_back(std::to_string(g.nonFinite) + " vertices have non-finite coordinates and were left out.");
+  if (g.unreferenced > 0)
+    sum.warnings.push_back(std::to_string(g.unreferenced) + " vertices belong to no face and were left unclassified.");
+  if (g.degenerate > 0)
+    sum.warnings.push_back(std::to_string(g.degenerate) + " faces have zero area and cast no vote.");
+  if (g.dropped > 0)
+    sum.warnings.push_back(std::to_string(g.dropped) + " faces repeat a vertex or touch a non-finite one and were ignored.");
+  res.swap(out);
+  sum.secondsTotal = Seconds(t0);
+  st.ok = true;
+  return st;
+}
+
+}  // namespace nvv
+
+namespace vcg {
+namespace tri {
+
+template <class MeshType>
+class NormalVectorVoting {
+ public:
+  static nvv::Status Compute(const MeshType& m, const nvv::Params& p, std::vector<nvv::VertexResult>& res,
+                             nvv::Summary& sum, const nvv::Progress& cb = nvv::Progress()) {
+    nvv::SurfaceGraph g;
+    nvv::BuildSurfaceGraph(m, g);
+    return nvv::RunNormalVectorVoting(g, p, res, sum, cb);
+  }
+};
+
+}  // namespace tri
+}  // namespace vcg
+
+#endif

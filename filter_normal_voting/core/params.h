@@ -1,0 +1,92 @@
+// Parameters of Normal Vector Voting (Page et al. 2002) and their validation.
+//
+// The user thinks in angles; the paper's system constants follow from them (Eq. 11-12):
+//   tan(phi/2) = sqrt(1/(eps+1))  =>  eps = 1/tan^2(phi/2) - 1
+//   tan(psi/2) = sqrt(1/(eta+1))  =>  eta = 1/tan^2(psi/2) - 1
+// phi = psi = 60 deg gives the paper's robust default eps = eta = 2. Both constants must be
+// positive, so both angles lie in (0, 90) degrees.
+#ifndef NVV_CORE_PARAMS_H
+#define NVV_CORE_PARAMS_H
+
+#include <cmath>
+#include <string>
+
+namespace nvv {
+
+// How pass 2 turns the neighbourhood into principal curvatures and directions.
+enum class CurvatureFit : int {
+  // Weighted least-squares quadratic height field over the same-sheet neighbours, in the
+  // frame of the voted normal, with one height row and two slope rows (voted normals) per
+  // neighbour. Also refines the normal. The default: it wins the accuracy benchmark.
+  SheetQuadric = 0,
+  // The paper's form: Taubin's matrix B_v (Eq. 5) from the curvature votes (Eq. 13-17) and
+  // the eigenvalue relation of Eq. 4.
+  PaperTaubin = 1,
+  // The same curvature votes, fitted to Euler's formula kappa_i = T_i' II T_i by weighted
+  // least squares (no assumption that votes spread evenly over all directions).
+  EulerLeastSquares = 2,
+};
+
+// How pass 1 orders the two largest eigenpairs before Eq. 10.
+enum class ClassRule : int {
+  // Put first the eigenpair most aligned with the oriented mean vote, so creases with a
+  // normal-angle above 90 deg are not mistaken for surfaces (ALGORITHM.md). Falls back to
+  // PaperOrder on meshes that are not consistently oriented.
+  SignAware = 0,
+  PaperOrder = 1,  // eigenvalues in decreasing order, as in the paper
+};
+
+struct Params {
+  double k = 3.0;               // neighbourhood radius g_m = k * mean edge length ...
+  double absoluteRadius = 0.0;  // ... unless this is > 0: then g_m = absoluteRadius
+  double creaseAngleDeg = 60.0; // phi: smallest angle between two sheets' normals that is a crease
+  double cornerAngleDeg = 60.0; // psi: the same for the third direction (corners)
+  bool stopAtCreases = true;    // pass 2 does not march through non-surface vertices (par. 6.5)
+  CurvatureFit fit = CurvatureFit::SheetQuadric;
+  ClassRule classRule = ClassRule::SignAware;
+  double sigmaFraction = 1.0 / 3.0;  // Eq. 8: sigma = sigmaFraction * g_m (paper: 1/3)
+  int maxNeighbourhood = 4096;  // cap on vertices reached by one march (bounds a fan's cost)
+  int threads = 0;              // 0: OpenMP's default
+};
+
+inline double DegToRad(double d) { return d * 3.14159265358979323846 / 180.0; }
+inline double RadToDeg(double r) { return r * 180.0 / 3.14159265358979323846; }
+
+// Eq. 11 / 12 solved for the constant.
+inline double EpsilonFromAngle(double angleDeg) {
+  const double t = std::tan(DegToRad(angleDeg) / 2.0);
+  return 1.0 / (t * t) - 1.0;
+}
+inline double AngleFromEpsilon(double eps) {
+  return RadToDeg(2.0 * std::atan(std::sqrt(1.0 / (eps + 1.0))));
+}
+
+// Empty when the parameters are usable; otherwise a sentence for the user.
+inline std::string ValidateParams(const Params& p) {
+  auto bad = [](double x) { return !std::isfinite(x); };
+  if (bad(p.k) || p.k <= 0.0 || p.k > 50.0)
+    return "Neighbourhood size k must be a number in (0, 50] mean edge lengths (got " +
+           std::to_string(p.k) + ").";
+  if (bad(p.absoluteRadius) || p.absoluteRadius < 0.0)
+    return "The absolute radius must be 0 (use k) or a positive number.";
+  if (bad(p.creaseAngleDeg) || p.creaseAngleDeg < 1.0 || p.creaseAngleDeg > 89.0)
+    return "The crease angle must be between 1 and 89 degrees (got " +
+           std::to_string(p.creaseAngleDeg) + ").";
+  if (bad(p.cornerAngleDeg) || p.cornerAngleDeg < 1.0 || p.cornerAngleDeg > 89.0)
+    return "The corner angle must be between 1 and 89 degrees (got " +
+           std::to_string(p.cornerAngleDeg) + ").";
+  if (bad(p.sigmaFraction) || p.sigmaFraction < 0.01 || p.sigmaFraction > 100.0)
+    return "The weight fall-off (sigma / radius) must be in [0.01, 100].";
+  if (p.maxNeighbourhood < 16 || p.maxNeighbourhood > 10000000)
+    return "The neighbourhood cap must be between 16 and 10,000,000 vertices.";
+  if (p.threads < 0 || p.threads > 4096) return "The thread count must be 0 (all) or positive.";
+  const int fit = static_cast<int>(p.fit);
+  if (fit < 0 || fit > 2) return "Unknown curvature fit.";
+  const int rule = static_cast<int>(p.classRule);
+  if (rule < 0 || rule > 1) return "Unknown classification rule.";
+  return std::string();
+}
+
+}  // namespace nvv
+
+#endif

@@ -1,0 +1,161 @@
+// A compact, read-only copy of a triangle mesh for Normal Vector Voting: positions in double,
+// usable faces with their unit normals and areas, and vertex->face adjacency in CSR form
+// (one offset array, one index array), built once in O(V + F).
+//
+// Why a copy and not the vcg mesh itself: the two passes touch each vertex's neighbourhood
+// tens to hundreds of times; flat arrays of indices are several times more cache-friendly
+// than vcg's pointer-linked optional components, need no VF adjacency on the user's mesh,
+// and let the same compiled code serve float and double meshes.
+//
+// Defects are absorbed here, so nothing downstream sees them:
+//  - deleted vertices and vertices with a non-finite coordinate are not "usable";
+//  - faces that are deleted, repeat a vertex, or touch an unusable vertex are dropped;
+//  - zero-area faces stay for distances (their edges are real) but get no normal and no vote;
+//  - vertices that no usable face references are left without adjacency.
+#ifndef NVV_CORE_SURFACE_GRAPH_H
+#define NVV_CORE_SURFACE_GRAPH_H
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace nvv {
+
+struct SurfaceGraph {
+  std::vector<Eigen::Vector3d> pos;
+  std::vector<std::uint8_t> usable;           // finite, not deleted
+  std::vector<std::array<int, 3>> face;       // usable faces only
+  std::vector<Eigen::Vector3d> faceNormal;    // unit; zero for degenerate faces
+  std::vector<double> faceArea;               // 0 for degenerate faces
+  std::vector<int> vfStart;                   // CSR: faces of v are vfList[vfStart[v] .. vfStart[v+1])
+  std::vector<int> vfList;
+  double meanEdge = 0;                        // l_ave over the edges of usable faces
+  double maxArea = 0;                         // A_max of Eq. 8
+  bool consistentlyOriented = true;           // every edge shared by two faces is used in opposite directions
+  std::size_t nonFinite = 0, unreferenced = 0, degenerate = 0, dropped = 0;
+
+  int VertexCount() const { return static_cast<int>(pos.size()); }
+  int FaceCount() const { return static_cast<int>(face.size()); }
+  int FaceBegin(int v) const { return vfStart[v]; }
+  int FaceEnd(int v) const { return vfStart[v + 1]; }
+  bool Referenced(int v) const { return vfStart[v + 1] > vfStart[v]; }
+
+  // Fills the graph from positions and faces given as vertex indices (-1 marks a face to skip).
+  void Build(std::vector<Eigen::Vector3d>&& positions, std::vector<std::uint8_t>&& usableVertex,
+             const std::vector<std::array<int, 3>>& rawFaces) {
+    pos = std::move(positions);
+    usable = std::move(usableVertex);
+    const int n = static_cast<int>(pos.size());
+    nonFinite = 0;
+    for (int v = 0; v < n; ++v) {
+      if (usable[v] && !(std::isfinite(pos[v].x()) && std::isfinite(pos[v].y()) && std::isfinite(pos[v].z()))) {
+        usable[v] = 0;
+        ++nonFinite;
+      }
+    }
+    face.clear();
+    face.reserve(rawFaces.size());
+    dropped = 0;
+    for (const auto& f : rawFaces) {
+      bool ok = f[0] != f[1] && f[1] != f[2] && f[0] != f[2];
+      for (int j = 0; j < 3 && ok; ++j) ok = f[j] >= 0 && f[j] < n && usable[f[j]];
+      if (ok) face.push_back(f);
+      else ++dropped;
+    }
+    const int nf = FaceCount();
+    faceNormal.assign(nf, Eigen::Vector3d::Zero());
+    faceArea.assign(nf, 0.0);
+    double edgeSum = 0;
+    for (int i = 0; i < nf; ++i) {
+      const auto& f = face[i];
+      for (int j = 0; j < 3; ++j) edgeSum += (pos[f[(j + 1) % 3]] - pos[f[j]]).norm();
+    }
+    meanEdge = nf > 0 ? edgeSum / (3.0 * nf) : 0.0;
+    // A face is degenerate when its area is negligible against l_ave^2 (scale-free test).
+    const double areaFloor = 1e-12 * meanEdge * meanEdge;
+    maxArea = 0;
+    degenerate = 0;
+    for (int i = 0; i < nf; ++i) {
+      const auto& f = face[i];
+      const Eigen::Vector3d c = (pos[f[1]] - pos[f[0]]).cross(pos[f[2]] - pos[f[0]]);
+      const double twiceArea = c.norm();
+      if (!(twiceArea * 0.5 > areaFloor) || !std::isfinite(twiceArea)) {
+        ++degenerate;
+        continue;
+      }
+      faceNormal[i] = c / twiceArea;
+      faceArea[i] = 0.5 * twiceArea;
+      maxArea = std::max(maxArea, faceArea[i]);
+    }
+    // Vertex -> face adjacency, counting sort into CSR.
+    vfStart.assign(n + 1, 0);
+    for (const auto& f : face)
+      for (int j = 0; j < 3; ++j) ++vfStart[f[j] + 1];
+    for (int v = 0; v < n; ++v) vfStart[v + 1] += vfStart[v];
+    vfList.assign(vfStart[n], 0);
+    std::vector<int> fill(vfStart.begin(), vfStart.end() - 1);
+    for (int i = 0; i < nf; ++i)
+      for (int j = 0; j < 3; ++j) vfList[fill[face[i][j]]++] = i;
+    unreferenced = 0;
+    for (int v = 0; v < n; ++v)
+      if (usable[v] && !Referenced(v)) ++unreferenced;
+    consistentlyOriented = CheckOrientation();
+  }
+
+ private:
+  // A two-face edge used twice in the same direction means the orientation flips there.
+  // Edges with three or more faces (non-manifold) say nothing about orientation: skipped.
+  bool CheckOrientation() const {
+    std::unordered_map<std::uint64_t, int> directed;
+    directed.reserve(face.size() * 3);
+    auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+    for (const auto& f : face)
+      for (int j = 0; j < 3; ++j) ++directed[key(f[j], f[(j + 1) % 3])];
+    for (const auto& e : directed) {
+      if (e.second < 2) continue;
+      const auto rev = directed.find(key(int(e.first & 0xffffffffu), int(e.first >> 32)));
+      if (rev == directed.end()) return false;
+    }
+    return true;
+  }
+};
+
+// Builds the graph from any vcglib triangle mesh (vertex and face containers with
+// IsD(), cP(), cV(j)). Results elsewhere are indexed like m.vert, deleted slots included.
+template <class MeshType>
+void BuildSurfaceGraph(const MeshType& m, SurfaceGraph& g) {
+  const std::size_t n = m.vert.size();
+  std::vector<Eigen::Vector3d> positions(n);
+  std::vector<std::uint8_t> usable(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& v = m.vert[i];
+    if (v.IsD()) continue;
+    positions[i] = Eigen::Vector3d(double(v.cP()[0]), double(v.cP()[1]), double(v.cP()[2]));
+    usable[i] = 1;
+  }
+  std::vector<std::array<int, 3>> raw;
+  raw.reserve(m.face.size());
+  const auto* base = n > 0 ? &m.vert[0] : nullptr;
+  for (const auto& f : m.face) {
+    if (f.IsD()) continue;
+    std::array<int, 3> t{-1, -1, -1};
+    for (int j = 0; j < 3; ++j) {
+      const auto* vp = f.cV(j);
+      if (vp != nullptr && base != nullptr) {
+        const std::ptrdiff_t idx = vp - base;
+        if (idx >= 0 && std::size_t(idx) < n) t[j] = int(idx);
+      }
+    }
+    raw.push_back(t);
+  }
+  g.Build(std::move(positions), std::move(usable), raw);
+}
+
+}  // namespace nvv
+
+#endif

@@ -1,0 +1,80 @@
+// Helpers shared by the tests: running the core on a test mesh, vcglib's one-ring estimators
+// on the same mesh, and error statistics.
+#ifndef NVV_TESTS_TEST_SUPPORT_H
+#define NVV_TESTS_TEST_SUPPORT_H
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "test_mesh.h"  // vcg/complex/complex.h first, as vcglib requires
+
+#include <vcg/complex/algorithms/update/curvature.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <vcg/complex/algorithms/update/topology.h>
+
+#include "core/normal_vector_voting.h"
+#include "sample_meshes/synthetic_shapes.h"
+
+namespace nvv_test {
+
+inline Eigen::Vector3d E(const vcg::Point3d& p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
+inline Eigen::Vector3d E(const float* p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
+
+struct NvvRun {
+  std::vector<nvv::VertexResult> res;
+  nvv::Summary sum;
+  nvv::Status st;
+};
+inline NvvRun RunNvv(const TMesh& m, const nvv::Params& p) {
+  NvvRun r;
+  r.st = vcg::tri::NormalVectorVoting<TMesh>::Compute(m, p, r.res, r.sum);
+  return r;
+}
+inline nvv::Params WithK(double k, nvv::CurvatureFit fit = nvv::CurvatureFit::SheetQuadric) {
+  nvv::Params p;
+  p.k = k;
+  p.fit = fit;
+  return p;
+}
+
+// vcglib's angle-weighted one-ring normals (what MeshLab computes by default).
+inline void OneRingNormals(TMesh& m) {
+  vcg::tri::UpdateNormal<TMesh>::PerVertexAngleWeighted(m);
+  vcg::tri::UpdateNormal<TMesh>::NormalizePerVertex(m);
+}
+// vcglib's Taubin one-ring principal directions (MeshLab's "Taubin approximation").
+inline void OneRingTaubin(TMesh& m) {
+  vcg::tri::UpdateTopology<TMesh>::VertexFace(m);
+  vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+  vcg::tri::UpdateCurvature<TMesh>::PrincipalDirections(m);
+}
+
+struct Stats {
+  double median = 0, p90 = 0, mean = 0, max = 0;
+  std::size_t n = 0;
+};
+inline Stats StatsOf(std::vector<double> v) {
+  Stats s;
+  s.n = v.size();
+  if (v.empty()) return s;
+  std::sort(v.begin(), v.end());
+  s.median = v[v.size() / 2];
+  s.p90 = v[std::min(v.size() - 1, std::size_t(0.9 * v.size()))];
+  for (double x : v) s.mean += x;
+  s.mean /= v.size();
+  s.max = v.back();
+  return s;
+}
+inline double AngleDeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const double c = std::abs(a.normalized().dot(b.normalized()));
+  return nvv::RadToDeg(std::acos(std::min(1.0, c)));
+}
+// Interior of the paper's 32x32 grids: |x|, |y| <= limit (away from the boundary).
+inline bool Interior(const vcg::Point3d& p, double limit) {
+  return std::abs(p[0]) <= limit && std::abs(p[1]) <= limit;
+}
+
+}  // namespace nvv_test
+
+#endif
