@@ -1,0 +1,213 @@
+// Writes Normal Vector Voting results onto a vcglib mesh: normals, quality, colour, selection,
+// curvature directions (PD1/PD2, K1/K2) and named per-vertex attributes. Shared by both MeshLab
+// plugin APIs and the command-line tool, so each output means the same everywhere.
+//
+// Conventions (documented in README.md):
+//  - K1 >= K2 always, PD1 is the direction of K1 (maximum curvature), PD2 of K2; a sphere
+//    of radius R with outward normals has K1 = K2 = +1/R. (MeshLab's own "Compute curvature
+//    principal directions" does not keep this order for every method.)
+//  - Quality modes: mean H = (k1+k2)/2, Gaussian K = k1 k2, shape index
+//    SI = (2/pi) atan((k1+k2)/(k1-k2)) (+1 cap, 0 saddle, -1 cup), curvedness
+//    C = sqrt((k1^2+k2^2)/2). Vertices without a curvature get 0 and are left out of the ramp.
+#ifndef NVV_APPLY_APPLY_RESULTS_H
+#define NVV_APPLY_APPLY_RESULTS_H
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <vcg/complex/complex.h>
+
+#include "core/filter_options.h"
+#include "core/vertex_result.h"
+
+namespace nvv {
+
+// Names of the per-vertex attributes the filter adds (float, or Point3 of the mesh scalar).
+struct AttributeNames {
+  static const char* Class() { return "nvv_class"; }
+  static const char* SurfaceSaliency() { return "nvv_surface_saliency"; }
+  static const char* CreaseSaliency() { return "nvv_crease_saliency"; }
+  static const char* CornerSaliency() { return "nvv_corner_saliency"; }
+  static const char* CuspAngle() { return "nvv_cusp_angle"; }            // degrees
+  static const char* CreaseCurvature() { return "nvv_crease_curvature"; }
+  static const char* CreaseTangent() { return "nvv_crease_tangent"; }    // Point3
+};
+
+// The quality value of one vertex; `valid` false when it has none for this mode.
+inline double QualityValue(const VertexResult& r, QualityMode mode, bool& valid) {
+  const bool curv = r.Has(kCurvatureValid);
+  valid = true;
+  const double k1 = r.k1, k2 = r.k2;
+  switch (mode) {
+    case QualityMode::MeanCurvature: valid = curv; return curv ? 0.5 * (k1 + k2) : 0;
+    case QualityMode::GaussianCurvature: valid = curv; return curv ? k1 * k2 : 0;
+    case QualityMode::MaxCurvature: valid = curv; return curv ? k1 : 0;
+    case QualityMode::MinCurvature: valid = curv; return curv ? k2 : 0;
+    case QualityMode::ShapeIndex:
+      valid = curv;
+      if (!curv || (k1 == 0 && k2 == 0)) return 0;
+      return (2.0 / 3.14159265358979323846) * std::atan2(k1 + k2, k1 - k2);
+    case QualityMode::Curvedness: valid = curv; return curv ? std::sqrt(0.5 * (k1 * k1 + k2 * k2)) : 0;
+    case QualityMode::Class: return double(int(r.cls));
+    case QualityMode::CuspAngle:
+      valid = r.Has(kCreaseValid);
+      return valid ? RadToDeg(r.cuspAngle) : 0;
+    case QualityMode::SurfaceSaliency: valid = r.cls != VertexClass::Invalid; return r.SurfaceSaliency();
+    default: valid = false; return 0;
+  }
+}
+
+inline vcg::Color4b ClassColor(VertexClass c) {
+  switch (c) {
+    case VertexClass::Surface: return vcg::Color4b(190, 190, 190, 255);
+    case VertexClass::Crease: return vcg::Color4b(220, 30, 30, 255);
+    case VertexClass::Corner: return vcg::Color4b(30, 80, 235, 255);
+    default: return vcg::Color4b(255, 0, 255, 255);
+  }
+}
+
+// The p-th and (100-p)-th percentiles of the valid quality values.
+inline bool PercentileRange(std::vector<double> values, double p, double& lo, double& hi) {
+  if (values.empty()) return false;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  const std::size_t a = std::min(n - 1, std::size_t(std::floor(p / 100.0 * (n - 1))));
+  const std::size_t b = std::min(n - 1, std::size_t(std::ceil((100.0 - p) / 100.0 * (n - 1))));
+  lo = values[a];
+  hi = values[b];
+  return true;
+}
+
+template <class MeshType>
+class ApplyResults {
+ public:
+  typedef typename MeshType::ScalarType ScalarType;
+  typedef typename MeshType::CoordType CoordType;
+
+  // What the mesh must offer for the chosen options; the adapter enables it (MeshLab:
+  // updateDataMask) before calling Apply.
+  struct Needs {
+    bool quality = false, color = false, curvatureDir = false;
+  };
+  static Needs NeedsFor(const FilterOptions& o) {
+    Needs n;
+    n.quality = o.quality != QualityMode::Keep || o.color == ColorMode::QualityRamp;
+    n.color = o.color != ColorMode::Keep;
+    n.curvatureDir = true;
+    return n;
+  }
+
+  // Writes everything the options ask for. The mesh's optional components must exist.
+  static void Apply(MeshType& m, const std::vector<VertexResult>& res, const FilterOptions& o) {
+    if (o.updateNormals && vcg::tri::HasPerVertexNormal(m)) Normals(m, res);
+    const QualityMode qmode = o.quality == QualityMode::Keep && o.color == ColorMode::QualityRamp
+                                  ? QualityMode::MeanCurvature : o.quality;
+    if (qmode != QualityMode::Keep && vcg::tri::HasPerVertexQuality(m)) Quality(m, res, qmode);
+    if (o.color == ColorMode::Classes && vcg::tri::HasPerVertexColor(m)) ClassColors(m, res);
+    if (o.color == ColorMode::QualityRamp && vcg::tri::HasPerVertexColor(m)) Ramp(m, res, qmode, o.clampPercentile);
+    if (o.selection != SelectionMode::None) Selection(m, res, o.selection);
+    if (vcg::tri::HasPerVertexCurvatureDir(m)) CurvatureDir(m, res);
+    Attributes(m, res);
+  }
+
+  static void Normals(MeshType& m, const std::vector<VertexResult>& res) {
+    for (std::size_t i = 0; i < m.vert.size(); ++i) {
+      if (m.vert[i].IsD() || !res[i].Has(kNormalValid)) continue;
+      m.vert[i].N() = ToCoord(res[i].normal);
+    }
+  }
+  static void Quality(MeshType& m, const std::vector<VertexResult>& res, QualityMode mode) {
+    bool valid;
+    for (std::size_t i = 0; i < m.vert.size(); ++i)
+      if (!m.vert[i].IsD()) m.vert[i].Q() = ScalarType(QualityValue(res[i], mode, valid));
+  }
+  static void ClassColors(MeshType& m, const std::vector<VertexResult>& res) {
+    for (std::size_t i = 0; i < m.vert.size(); ++i)
+      if (!m.vert[i].IsD()) m.vert[i].C() = ClassColor(res[i].cls);
+  }
+  // MeshLab's red (low) -> blue (high) ramp over the clamped percentile range; vertices without
+  // a value are grey.
+  static void Ramp(MeshType& m, const std::vector<VertexResult>& res, QualityMode mode, double percentile) {
+    std::vector<double> values;
+    bool valid;
+    for (std::size_t i = 0; i < m.vert.size(); ++i) {
+      if (m.vert[i].IsD()) continue;
+      const double q = QualityValue(res[i], mode, valid);
+      if (valid) values.push_back(q);
+    }
+    double lo = 0, hi = 0;
+    PercentileRange(values, percentile, lo, hi);
+    for (std::size_t i = 0; i < m.vert.size(); ++i) {
+      if (m.vert[i].IsD()) continue;
+      const double q = QualityValue(res[i], mode, valid);
+      m.vert[i].C() = valid ? vcg::Color4b::ColorRamp(float(lo), float(hi), float(q)) : vcg::Color4b(128, 128, 128, 255);
+    }
+  }
+  static bool Selected(const VertexResult& r, SelectionMode mode) {
+    switch (mode) {
+      case SelectionMode::CreasesAndCorners: return r.cls == VertexClass::Crease || r.cls == VertexClass::Corner;
+      case SelectionMode::CornersOnly: return r.cls == VertexClass::Corner;
+      case SelectionMode::SurfaceOnly: return r.cls == VertexClass::Surface;
+      default: return false;
+    }
+  }
+  static void Selection(MeshType& m, const std::vector<VertexResult>& res, SelectionMode mode) {
+    for (std::size_t i = 0; i < m.vert.size(); ++i) {
+      if (m.vert[i].IsD()) continue;
+      if (Selected(res[i], mode)) m.vert[i].SetS();
+      else m.vert[i].ClearS();
+    }
+  }
+  static void CurvatureDir(MeshType& m, const std::vector<VertexResult>& res) {
+    for (std::size_t i = 0; i < m.vert.size(); ++i) {
+      auto& v = m.vert[i];
+      if (v.IsD()) continue;
+      const bool ok = res[i].Has(kCurvatureValid);
+      v.PD1() = ok ? ToCoord(res[i].t1) : CoordType(0, 0, 0);
+      v.PD2() = ok ? ToCoord(res[i].t2) : CoordType(0, 0, 0);
+      v.K1() = ok ? ScalarType(res[i].k1) : ScalarType(0);
+      v.K2() = ok ? ScalarType(res[i].k2) : ScalarType(0);
+    }
+  }
+  static void Attributes(MeshType& m, const std::vector<VertexResult>& res) {
+    typedef vcg::tri::Allocator<MeshType> Alloc;
+    auto cls = Alloc::template GetPerVertexAttribute<ScalarType>(m, AttributeNames::Class());
+    auto ss = Alloc::template GetPerVertexAttribute<ScalarType>(m, AttributeNames::SurfaceSaliency());
+    auto cs = Alloc::template GetPerVertexAttribute<ScalarType>(m, AttributeNames::CreaseSaliency());
+    auto ns = Alloc::template GetPerVertexAttribute<ScalarType>(m, AttributeNames::CornerSaliency());
+    auto cusp = Alloc::template GetPerVertexAttribute<ScalarType>(m, AttributeNames::CuspAngle());
+    auto ck = Alloc::template GetPerVertexAttribute<ScalarType>(m, AttributeNames::CreaseCurvature());
+    auto tan = Alloc::template GetPerVertexAttribute<CoordType>(m, AttributeNames::CreaseTangent());
+    for (std::size_t i = 0; i < m.vert.size(); ++i) {
+      const VertexResult& r = res[i];
+      cls[i] = ScalarType(int(r.cls));
+      ss[i] = ScalarType(r.SurfaceSaliency());
+      cs[i] = ScalarType(r.CreaseSaliency());
+      ns[i] = ScalarType(r.CornerSaliency());
+      cusp[i] = ScalarType(r.Has(kCreaseValid) ? RadToDeg(r.cuspAngle) : 0.0);
+      ck[i] = ScalarType(r.Has(kCreaseValid) ? r.creaseCurvature : 0.0f);
+      tan[i] = r.Has(kCreaseValid) ? ToCoord(r.creaseTangent) : CoordType(0, 0, 0);
+    }
+  }
+
+ private:
+  static CoordType ToCoord(const float* p) { return CoordType(ScalarType(p[0]), ScalarType(p[1]), ScalarType(p[2])); }
+};
+
+// One log line with counts per class, curvature ranges, radius and time.
+inline std::string SummaryLine(const Summary& s) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "Normal vector voting: %zu surface, %zu crease, %zu corner, %zu unclassified vertices; "
+                "k1 in [%.4g, %.4g], k2 in [%.4g, %.4g]; radius %.4g (mean edge %.4g), epsilon %.3g, eta %.3g; "
+                "%.2f s (pass 1 %.2f s, pass 2 %.2f s)",
+                s.perClass[0], s.perClass[1], s.perClass[2], s.perClass[3], s.k1Min, s.k1Max, s.k2Min, s.k2Max,
+                s.radius, s.meanEdge, s.epsilon, s.eta, s.secondsTotal, s.secondsPass1, s.secondsPass2);
+  return buf;
+}
+
+}  // namespace nvv
+
+#endif

@@ -1,0 +1,167 @@
+// Everything a user sets when running the filter: the algorithm's parameters (params.h)
+// plus what to write onto the mesh. The table below is the single definition of every
+// parameter's stable name, label, help text, default and range; the MeshLab dialogs (both
+// plugin APIs), the command-line tool and the tests all read it.
+//
+// Names are stable: .mlx scripts, PyMeshLab keyword arguments and CLI options use them.
+#ifndef NVV_CORE_FILTER_OPTIONS_H
+#define NVV_CORE_FILTER_OPTIONS_H
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "params.h"
+
+namespace nvv {
+
+enum class QualityMode : int {
+  MeanCurvature = 0, GaussianCurvature, MaxCurvature, MinCurvature, ShapeIndex, Curvedness,
+  Class, CuspAngle, SurfaceSaliency, Keep
+};
+enum class ColorMode : int { Classes = 0, QualityRamp, Keep };
+enum class SelectionMode : int { None = 0, CreasesAndCorners, CornersOnly, SurfaceOnly };
+
+struct FilterOptions {
+  Params core;
+  bool updateNormals = true;
+  QualityMode quality = QualityMode::MeanCurvature;
+  ColorMode color = ColorMode::Classes;
+  double clampPercentile = 2.0;  // the quality ramp spans the p-th to (100-p)-th percentile
+  SelectionMode selection = SelectionMode::None;
+};
+
+enum class ParamType { Float, Int, Bool, Enum };
+
+struct ParamSpec {
+  const char* name;   // stable identifier
+  ParamType type;
+  const char* label;  // short label (MeshLab dialog)
+  const char* help;   // tooltip and --help text, in a user's words
+  double defaultValue;
+  double minValue, maxValue;         // Float / Int
+  std::vector<const char*> choices;  // Enum: labels, value = index
+  std::vector<const char*> tokens;   // Enum: short names for the command line
+  bool advanced;                     // shown in the dialog's advanced section
+};
+
+inline const std::vector<ParamSpec>& FilterParameterTable() {
+  static const std::vector<ParamSpec> table = {
+    {"neighbourhood_k", ParamType::Float, "Neighbourhood size k",
+     "Radius of the geodesic neighbourhood in mean edge lengths (g_m = k * l_ave). Small k (1-2) keeps "
+     "small features; larger k (3-8) averages away scanner noise. The absolute radius is written to the log.",
+     3.0, 0.1, 50.0, {}, {}, false},
+    {"absolute_radius", ParamType::Float, "Absolute radius (0 = use k)",
+     "Neighbourhood radius in the mesh's own units. 0 means: use k times the mean edge length.",
+     0.0, 0.0, 1e30, {}, {}, true},
+    {"crease_angle", ParamType::Float, "Crease angle (deg)",
+     "Smallest angle between the normals of two surface sheets that still counts as a crease "
+     "(the paper's epsilon = 1/tan^2(angle/2) - 1; 60 deg gives epsilon = 2). Raise it to ignore "
+     "shallow edges, lower it to catch them. Between 1 and 89 degrees.",
+     60.0, 1.0, 89.0, {}, {}, false},
+    {"corner_angle", ParamType::Float, "Corner angle (deg)",
+     "The same threshold for the third direction: how strongly a third sheet must show before a "
+     "vertex is a corner (the paper's eta). Between 1 and 89 degrees.",
+     60.0, 1.0, 89.0, {}, {}, false},
+    {"stop_at_creases", ParamType::Bool, "Stop curvature at creases",
+     "When estimating curvature, do not let a neighbourhood grow across crease and corner vertices, "
+     "so each side of an edge keeps its own curvature.",
+     1.0, 0, 1, {}, {}, false},
+    {"curvature_fit", ParamType::Enum, "Curvature estimator",
+     "How the neighbourhood gives curvature. Crease-aware quadric: fits a quadratic patch to the "
+     "positions and voted normals of the same-sheet neighbours (most accurate, also refines the normal). "
+     "Taubin matrix: the paper's estimator. Euler least squares: the paper's curvature votes fitted "
+     "to Euler's formula.",
+     0.0, 0, 2, {"Crease-aware quadric fit", "Taubin matrix (paper)", "Euler least squares"},
+     {"quadric", "taubin", "euler"}, false},
+    {"class_rule", ParamType::Enum, "Classification rule",
+     "Sign-aware: orders the vote matrix's eigenvectors by the oriented mean vote, so sharp edges "
+     "above 90 deg (knife edges, fins, blade edges) are found. Paper: the original eigenvalue order, "
+     "which takes creases sharper than about 120 deg for smooth surface.",
+     0.0, 0, 1, {"Sign-aware", "Paper's eigenvalue order"}, {"sign_aware", "paper"}, true},
+    {"update_normals", ParamType::Bool, "Update vertex normals",
+     "Replace the normals of surface vertices by the estimated ones, and those of crease vertices by "
+     "the bisector of the two sheets. Corner and unclassified vertices keep their normal.",
+     1.0, 0, 1, {}, {}, false},
+    {"quality", ParamType::Enum, "Vertex quality",
+     "What to store in the per-vertex quality. Curvatures of non-surface vertices are 0.",
+     0.0, 0, 9,
+     {"Mean curvature", "Gaussian curvature", "Max curvature k1", "Min curvature k2", "Shape index",
+      "Curvedness", "Class (0 surface, 1 crease, 2 corner, 3 none)", "Cusp angle (deg)", "Surface saliency",
+      "Keep"},
+     {"mean", "gaussian", "k1", "k2", "shape_index", "curvedness", "class", "cusp_angle", "saliency", "keep"},
+     false},
+    {"color", ParamType::Enum, "Vertex colour",
+     "Class colours: surface grey, crease red, corner blue, unclassified magenta. Quality ramp: the "
+     "chosen quality as a red-to-blue ramp clamped at percentiles. Keep: leave colours alone.",
+     0.0, 0, 2, {"Class colours", "Quality ramp", "Keep"}, {"classes", "ramp", "keep"}, false},
+    {"color_clamp_percentile", ParamType::Float, "Ramp clamp percentile",
+     "The quality ramp spans the p-th to the (100-p)-th percentile, so a few extreme values do not "
+     "wash out the rest.",
+     2.0, 0.0, 49.0, {}, {}, true},
+    {"selection", ParamType::Enum, "Select vertices",
+     "Which vertices to select afterwards (replacing the current vertex selection), e.g. to protect "
+     "creases from a following smoothing filter.",
+     0.0, 0, 3, {"None (keep selection)", "Creases and corners", "Corners only", "Surface only"},
+     {"none", "creases", "corners", "surface"}, false},
+    {"max_neighbourhood", ParamType::Int, "Neighbourhood cap (vertices)",
+     "Upper bound on the vertices one neighbourhood may hold; bounds the time spent on very high "
+     "valence vertices or absurd radii. Vertices that hit it are counted in the log.",
+     4096.0, 16, 10000000, {}, {}, true},
+  };
+  return table;
+}
+
+inline const ParamSpec* FindParam(const std::string& name) {
+  for (const auto& p : FilterParameterTable())
+    if (name == p.name) return &p;
+  return nullptr;
+}
+
+// Sets option `name` from a number (Bool: 0/1, Enum: index). Returns an error sentence, or
+// empty when set. Values outside the table's range are refused here, not clamped.
+inline std::string SetOption(FilterOptions& o, const std::string& name, double value) {
+  const ParamSpec* spec = FindParam(name);
+  if (!spec) return "Unknown parameter '" + name + "'.";
+  if (!std::isfinite(value)) return std::string("Parameter '") + spec->name + "' is not a finite number.";
+  if (spec->type == ParamType::Enum && (value != std::floor(value) || value < 0 || value >= double(spec->choices.size())))
+    return std::string("Parameter '") + spec->name + "' must be one of its " + std::to_string(spec->choices.size()) + " choices.";
+  if ((spec->type == ParamType::Float || spec->type == ParamType::Int) && (value < spec->minValue || value > spec->maxValue))
+    return std::string("Parameter '") + spec->name + "' = " + std::to_string(value) + " is outside [" +
+           std::to_string(spec->minValue) + ", " + std::to_string(spec->maxValue) + "].";
+  const int iv = int(value);
+  if (name == "neighbourhood_k") o.core.k = value;
+  else if (name == "absolute_radius") o.core.absoluteRadius = value;
+  else if (name == "crease_angle") o.core.creaseAngleDeg = value;
+  else if (name == "corner_angle") o.core.cornerAngleDeg = value;
+  else if (name == "stop_at_creases") o.core.stopAtCreases = value != 0;
+  else if (name == "curvature_fit") o.core.fit = CurvatureFit(iv);
+  else if (name == "class_rule") o.core.classRule = ClassRule(iv);
+  else if (name == "update_normals") o.updateNormals = value != 0;
+  else if (name == "quality") o.quality = QualityMode(iv);
+  else if (name == "color") o.color = ColorMode(iv);
+  else if (name == "color_clamp_percentile") o.clampPercentile = value;
+  else if (name == "selection") o.selection = SelectionMode(iv);
+  else if (name == "max_neighbourhood") o.core.maxNeighbourhood = iv;
+  return std::string();
+}
+
+// Options with every parameter at its table default.
+inline FilterOptions DefaultOptions() {
+  FilterOptions o;
+  for (const auto& p : FilterParameterTable()) SetOption(o, p.name, p.defaultValue);
+  return o;
+}
+
+// Empty when the options can run; otherwise the reason, in a user's words.
+inline std::string ValidateOptions(const FilterOptions& o) {
+  std::string e = ValidateParams(o.core);
+  if (!e.empty()) return e;
+  if (!std::isfinite(o.clampPercentile) || o.clampPercentile < 0 || o.clampPercentile > 49)
+    return "The ramp clamp percentile must be between 0 and 49.";
+  return std::string();
+}
+
+}  // namespace nvv
+
+#endif

@@ -1,0 +1,76 @@
+// The parameter table (the one definition every adapter reads) and the writing of results
+// onto a mesh.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "apply/apply_results.h"
+#include "test_support.h"
+
+using namespace nvv_test;
+
+TEST(FilterOptions, TableDefaultsAreTheCoreDefaults) {
+  const nvv::FilterOptions o = nvv::DefaultOptions();
+  const nvv::Params p;
+  EXPECT_EQ(p.k, o.core.k);
+  EXPECT_EQ(p.absoluteRadius, o.core.absoluteRadius);
+  EXPECT_EQ(p.creaseAngleDeg, o.core.creaseAngleDeg);
+  EXPECT_EQ(p.cornerAngleDeg, o.core.cornerAngleDeg);
+  EXPECT_EQ(p.stopAtCreases, o.core.stopAtCreases);
+  EXPECT_EQ(p.fit, o.core.fit);
+  EXPECT_EQ(p.classRule, o.core.classRule);
+  EXPECT_EQ(p.maxNeighbourhood, o.core.maxNeighbourhood);
+  EXPECT_TRUE(nvv::ValidateOptions(o).empty());
+}
+
+TEST(FilterOptions, NamesAreUniqueAndEveryParameterIsSettable) {
+  std::set<std::string> names;
+  for (const auto& spec : nvv::FilterParameterTable()) {
+    EXPECT_TRUE(names.insert(spec.name).second) << spec.name;
+    nvv::FilterOptions o;
+    EXPECT_EQ("", nvv::SetOption(o, spec.name, spec.defaultValue)) << spec.name;
+    if (spec.type == nvv::ParamType::Enum) {
+      EXPECT_EQ(spec.choices.size(), spec.tokens.size()) << spec.name;
+      EXPECT_NE("", nvv::SetOption(o, spec.name, double(spec.choices.size()))) << spec.name;
+    }
+    if (spec.type == nvv::ParamType::Float) EXPECT_NE("", nvv::SetOption(o, spec.name, spec.maxValue * 2 + 1)) << spec.name;
+    EXPECT_NE("", nvv::SetOption(o, spec.name, std::nan(""))) << spec.name;
+  }
+  nvv::FilterOptions o;
+  EXPECT_NE("", nvv::SetOption(o, "no_such_parameter", 1));
+}
+
+TEST(ApplyResults, WritesOrderedCurvatureClassesAndSelection) {
+  TMesh m;
+  nvv_shapes::Roof(m, 90.0);
+  nvv::FilterOptions o = nvv::DefaultOptions();
+  o.selection = nvv::SelectionMode::CreasesAndCorners;
+  const NvvRun r = RunNvv(m, o.core);
+  ASSERT_TRUE(r.st.ok);
+  nvv::ApplyResults<TMesh>::Apply(m, r.res, o);
+  auto cls = vcg::tri::Allocator<TMesh>::GetPerVertexAttribute<double>(m, nvv::AttributeNames::Class());
+  int crease = 0;
+  for (std::size_t i = 0; i < m.vert.size(); ++i) {
+    const auto& v = m.vert[i];
+    EXPECT_GE(v.cK1(), v.cK2());
+    EXPECT_EQ(double(int(r.res[i].cls)), cls[i]);
+    EXPECT_EQ(r.res[i].cls == nvv::VertexClass::Crease || r.res[i].cls == nvv::VertexClass::Corner, v.IsS());
+    EXPECT_EQ(nvv::ClassColor(r.res[i].cls), v.cC());
+    crease += r.res[i].cls == nvv::VertexClass::Crease;
+  }
+  EXPECT_GT(crease, 20);
+}
+
+TEST(ApplyResults, QualityModesOnASphere) {
+  TMesh m;
+  nvv_shapes::PaperSphere(m, 31);
+  const NvvRun r = RunNvv(m, nvv::Params());
+  ASSERT_TRUE(r.st.ok);
+  bool valid;
+  for (std::size_t i = 0; i < m.vert.size(); ++i) {
+    if (!Interior(m.vert[i].cP(), 10)) continue;
+    EXPECT_NEAR(1.0 / 31, nvv::QualityValue(r.res[i], nvv::QualityMode::MeanCurvature, valid), 1e-3);
+    EXPECT_NEAR(1.0 / (31 * 31), nvv::QualityValue(r.res[i], nvv::QualityMode::GaussianCurvature, valid), 1e-4);
+    EXPECT_NEAR(1.0, nvv::QualityValue(r.res[i], nvv::QualityMode::ShapeIndex, valid), 0.05);  // a cap
+  }
+}
