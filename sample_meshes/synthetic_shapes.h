@@ -16,6 +16,8 @@
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/append.h>
+#include <vcg/complex/algorithms/create/marching_cubes.h>
+#include <vcg/complex/algorithms/create/mc_trivial_walker.h>
 
 namespace nvv_shapes {
 
@@ -145,6 +147,133 @@ void Cube(MeshType& m, double h, int n) {
       });
       vcg::tri::Append<MeshType, MeshType>::Mesh(m, side);
     }
+  vcg::tri::Clean<MeshType>::RemoveDuplicateVertex(m);
+  vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
+}
+
+// The paper's Fig. 10: a torus extracted by marching cubes from the implicit
+// (sqrt(x^2+y^2) - a)^2 + z^2 - b^2 on an n^3 grid (irregular, isosurface-like triangles).
+template <class MeshType>
+void MarchingCubesTorus(MeshType& m, double a, double b, int n) {
+  typedef vcg::SimpleVolume<vcg::SimpleVoxel<float>> Volume;
+  typedef vcg::tri::TrivialWalker<MeshType, Volume> Walker;
+  typedef vcg::tri::MarchingCubes<MeshType, Walker> MC;
+  m.Clear();
+  const double e = a + b + 2.0;
+  Volume vol;
+  vol.Init(vcg::Point3i(n, n, n), vcg::Box3f(vcg::Point3f(-e, -e, -e), vcg::Point3f(e, e, e)));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) {
+        const double x = -e + 2 * e * i / (n - 1), y = -e + 2 * e * j / (n - 1), z = -e + 2 * e * k / (n - 1);
+        const double r = std::sqrt(x * x + y * y) - a;
+        vol.Val(i, j, k) = float(r * r + z * z - b * b);
+      }
+  Walker walker;
+  MC mc(m, walker);
+  walker.template BuildMesh<MC>(m, vol, mc, 0.0f);
+  // Grid coordinates back to world coordinates.
+  for (auto& v : m.vert) {
+    if (v.IsD()) continue;
+    for (int c = 0; c < 3; ++c) v.P()[c] = typename MeshType::ScalarType(-e + 2 * e * v.P()[c] / (n - 1));
+  }
+}
+
+// A CAD-like part: a profile in (x, z) extruded along y over [-len/2, len/2], with capped ends.
+// Profile, counter-clockwise: bottom (-10,0)-(10,0), right side up to (10,6), a chamfer to
+// (7,10), a circular roof arc (centre (0.3,0.35), radius ~11.75) down to (-10,6), left side.
+// Normal-angles of the creases along y: 90 (both bottom edges), 36.9 (side/chamfer),
+// 18.4 (chamfer/roof, shallow), 28.7 (roof/left side); the roof is a cylinder (kappa = 1/11.75).
+// The caps meet every side at 90 deg; the profile's corners on the caps are 3-sheet corners.
+// h is the target edge length.
+template <class MeshType>
+void CadPart(MeshType& m, double len = 24, double h = 0.5) {
+  typedef vcg::Point2d P2;
+  std::vector<P2> ring;  // closed profile polyline, a vertex on every crease
+  auto segment = [&](P2 a, P2 b) {
+    const int n = std::max(1, int(std::lround((b - a).Norm() / h)));
+    for (int i = 0; i < n; ++i) ring.push_back(a + (b - a) * (double(i) / n));
+  };
+  segment(P2(-10, 0), P2(10, 0));
+  segment(P2(10, 0), P2(10, 6));
+  segment(P2(10, 6), P2(7, 10));
+  {
+    const P2 c(0.3, 0.35), A(7, 10), B(-10, 6);
+    const double R = (A - c).Norm(), a0 = std::atan2(A[1] - c[1], A[0] - c[0]), a1 = std::atan2(B[1] - c[1], B[0] - c[0]);
+    const int n = std::max(1, int(std::lround(R * (a1 - a0) / h)));
+    for (int i = 0; i < n; ++i) {
+      const double t = a0 + (a1 - a0) * i / n;
+      ring.push_back(i == 0 ? A : c + P2(std::cos(t), std::sin(t)) * R);
+    }
+  }
+  segment(P2(-10, 6), P2(-10, 0));
+  const int nr = int(ring.size()), ny = std::max(2, int(std::lround(len / h)) + 1);
+  m.Clear();
+  MeshType part;
+  ParametricGrid(part, nr, ny, [&](double s, double t) {
+    const P2 q = ring[std::min(nr - 1, int(std::lround(s * nr)) % nr)];
+    return vcg::Point3d(q[0], len * (0.5 - t), q[1]);  // y decreasing: outward sides
+  }, 0.0, 1, true, false);
+  vcg::tri::Append<MeshType, MeshType>::Mesh(m, part);
+  // Caps: rings shrinking towards the centroid with proportionally fewer points (so no needle
+  // triangles), consecutive rings zipped by their angular parameter.
+  P2 c(0, 0);
+  for (const auto& q : ring) c += q;
+  c /= double(nr);
+  std::vector<double> param(nr + 1, 0.0);  // arc-length parameter of the outer ring in [0, 1]
+  for (int i = 0; i < nr; ++i) param[i + 1] = param[i] + (ring[(i + 1) % nr] - ring[i]).Norm();
+  for (double& p : param) p /= param[nr];
+  auto outerAt = [&](double u) {
+    int i = int(std::upper_bound(param.begin(), param.end(), u) - param.begin()) - 1;
+    i = std::max(0, std::min(nr - 1, i));
+    const double f = (u - param[i]) / std::max(1e-12, param[i + 1] - param[i]);
+    return ring[i] + (ring[(i + 1) % nr] - ring[i]) * f;
+  };
+  const double maxRadius = 11.0;
+  const int rings = std::max(2, int(std::lround(maxRadius / h)));
+  for (int side = -1; side <= 1; side += 2) {
+    part.Clear();
+    const typename MeshType::ScalarType y = typename MeshType::ScalarType(side * len * 0.5);
+    std::vector<std::vector<typename MeshType::VertexPointer>> rv(rings);
+    std::vector<std::vector<double>> ru(rings);
+    for (int r = 0; r < rings; ++r) {
+      const double f = 1.0 - double(r) / rings;
+      const int n = r == 0 ? nr : std::max(6, int(std::lround(nr * f)));
+      auto vi = vcg::tri::Allocator<MeshType>::AddVertices(part, n);
+      for (int i = 0; i < n; ++i) {
+        const double u = r == 0 ? param[i] : double(i) / n;
+        const P2 q = r == 0 ? ring[i] : c + (outerAt(u) - c) * f;
+        (vi + i)->P() = typename MeshType::CoordType(q[0], y, q[1]);
+        ru[r].push_back(u);
+      }
+      // AddVertices may reallocate: take the pointers after the last allocation below.
+    }
+    auto centre = vcg::tri::Allocator<MeshType>::AddVertices(part, 1);
+    centre->P() = typename MeshType::CoordType(c[0], y, c[1]);
+    int base = 0;
+    for (int r = 0; r < rings; ++r) {
+      for (std::size_t i = 0; i < ru[r].size(); ++i) rv[r].push_back(&part.vert[base + i]);
+      base += int(ru[r].size());
+    }
+    auto* mid = &part.vert[base];
+    auto addTri = [&](typename MeshType::VertexPointer a, typename MeshType::VertexPointer b, typename MeshType::VertexPointer d) {
+      if (side > 0) vcg::tri::Allocator<MeshType>::AddFace(part, a, d, b);  // +y cap faces +y
+      else vcg::tri::Allocator<MeshType>::AddFace(part, a, b, d);
+    };
+    for (int r = 0; r + 1 < rings; ++r) {  // zip ring r (outer) with ring r+1 (inner)
+      const int no = int(ru[r].size()), ni = int(ru[r + 1].size());
+      int i = 0, j = 0;
+      while (i < no || j < ni) {
+        const double uo = i + 1 <= no ? (i + 1 < no ? ru[r][i + 1] : 1.0) : 2.0;
+        const double ui = j + 1 <= ni ? (j + 1 < ni ? ru[r + 1][j + 1] : 1.0) : 2.0;
+        if (uo <= ui) { addTri(rv[r][i % no], rv[r][(i + 1) % no], rv[r + 1][j % ni]); ++i; }
+        else { addTri(rv[r][i % no], rv[r + 1][(j + 1) % ni], rv[r + 1][j % ni]); ++j; }
+      }
+    }
+    const int nl = int(ru[rings - 1].size());
+    for (int i = 0; i < nl; ++i) addTri(rv[rings - 1][i], rv[rings - 1][(i + 1) % nl], mid);
+    vcg::tri::Append<MeshType, MeshType>::Mesh(m, part);
+  }
   vcg::tri::Clean<MeshType>::RemoveDuplicateVertex(m);
   vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
 }

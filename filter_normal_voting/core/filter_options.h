@@ -15,6 +15,10 @@
 
 namespace nvv {
 
+// The filter's name in MeshLab's menus and .mlx scripts, and PyMeshLab's name for it. Stable.
+constexpr const char* kFilterName = "Normal Vector Voting: Creases, Normals and Curvature";
+constexpr const char* kPythonFilterName = "compute_normal_vector_voting";
+
 enum class QualityMode : int {
   MeanCurvature = 0, GaussianCurvature, MaxCurvature, MinCurvature, ShapeIndex, Curvedness,
   Class, CuspAngle, SurfaceSaliency, Keep

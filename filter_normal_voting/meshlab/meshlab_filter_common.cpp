@@ -1,0 +1,118 @@
+#include "meshlab_filter_common.h"
+
+#include "apply/apply_results.h"
+#include "core/normal_vector_voting.h"
+
+namespace nvv_meshlab {
+
+QString FilterName() { return QString::fromUtf8(nvv::kFilterName); }
+
+QString PythonName() { return QString::fromUtf8(nvv::kPythonFilterName); }
+
+QString FilterInfo() {
+  QString s = QStringLiteral(
+      "Finds creases and corners and estimates normals and principal curvatures on noisy meshes by "
+      "<b>Normal Vector Voting</b>. Every vertex collects votes from the triangles of its geodesic "
+      "neighbourhood (found by fast marching on the surface); the votes' covariance tells whether the "
+      "vertex lies on a smooth surface, on a crease between two surfaces, or at a corner. Surface vertices "
+      "then get a normal, principal curvatures K1 &gt;= K2 and principal directions PD1, PD2 from their "
+      "same-side neighbours only, so creases do not blur the curvature of the surfaces beside them.<br><br>"
+      "<b>Outputs</b>: vertex normals (optional), vertex quality and colour as chosen, vertex selection "
+      "(optional), curvature directions PD1/PD2 with K1 &gt;= K2 (PD1 is always the direction of the "
+      "larger curvature K1; a sphere with outward normals has K1 = K2 = +1/R), and the per-vertex "
+      "attributes nvv_class (0 surface, 1 crease, 2 corner, 3 unclassified), nvv_surface_saliency, "
+      "nvv_crease_saliency, nvv_corner_saliency, nvv_cusp_angle (degrees), nvv_crease_curvature and "
+      "nvv_crease_tangent, which the PLY save dialog offers as custom attributes.<br><br>"
+      "<b>Parameters</b>:<ul>");
+  for (const auto& p : nvv::FilterParameterTable())
+    s += QStringLiteral("<li><b>%1</b> (<i>%2</i>): %3</li>")
+             .arg(QString::fromUtf8(p.label), QString::fromUtf8(p.name), QString::fromUtf8(p.help).toHtmlEscaped());
+  s += QStringLiteral(
+      "</ul><i>D. L. Page, Y. Sun, A. F. Koschan, J. Paik, M. A. Abidi</i>, <b>\"Normal Vector Voting: Crease "
+      "Detection and Curvature Estimation on Large, Noisy Meshes\"</b>, Graphical Models 64 (2002) 199-229.");
+  return s;
+}
+
+void AddParameters(RichParameterList& par) {
+  for (const auto& p : nvv::FilterParameterTable()) {
+    const QString name = QString::fromUtf8(p.name), label = QString::fromUtf8(p.label), help = QString::fromUtf8(p.help);
+    switch (p.type) {
+      case nvv::ParamType::Float: par.addParam(RichFloat(name, float(p.defaultValue), label, help)); break;
+      case nvv::ParamType::Int: par.addParam(RichInt(name, int(p.defaultValue), label, help)); break;
+      case nvv::ParamType::Bool: par.addParam(RichBool(name, p.defaultValue != 0, label, help)); break;
+      case nvv::ParamType::Enum: {
+        QStringList choices;
+        for (const char* c : p.choices) choices << QString::fromUtf8(c);
+        par.addParam(RichEnum(name, int(p.defaultValue), choices, label, help));
+        break;
+      }
+    }
+  }
+}
+
+QString ReadOptions(const RichParameterList& par, nvv::FilterOptions& options) {
+  options = nvv::DefaultOptions();
+  for (const auto& p : nvv::FilterParameterTable()) {
+    const QString name = QString::fromUtf8(p.name);
+    if (!par.hasParameter(name)) continue;  // scripts written for an older version keep the defaults
+    double value = 0;
+    switch (p.type) {
+      case nvv::ParamType::Float: value = par.getFloat(name); break;
+      case nvv::ParamType::Int: value = par.getInt(name); break;
+      case nvv::ParamType::Bool: value = par.getBool(name) ? 1 : 0; break;
+      case nvv::ParamType::Enum: value = par.getEnum(name); break;
+    }
+    const std::string err = nvv::SetOption(options, p.name, value);
+    if (!err.empty()) return QString::fromStdString(err);
+  }
+  return QString::fromStdString(nvv::ValidateOptions(options));
+}
+
+int OutputMask() {
+  return MeshModel::MM_VERTNORMAL | MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR |
+         MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_VERTCURVDIR;
+}
+
+Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, vcg::CallBackPos* cb) {
+  Outcome out;
+  CMeshO& m = mm.cm;
+  if (m.vn == 0) {
+    out.error = QStringLiteral("Normal Vector Voting: the mesh is empty.");
+    return out;
+  }
+  if (m.fn == 0) {
+    out.error = QStringLiteral("Normal Vector Voting: the mesh has no faces (a point cloud?). "
+                               "It needs a triangle mesh: reconstruct a surface first.");
+    return out;
+  }
+  nvv::Progress progress;
+  if (cb) progress = [cb](int pos, const char* text) { return cb(pos, text); };
+  std::vector<nvv::VertexResult> res;
+  const nvv::Status st = vcg::tri::NormalVectorVoting<CMeshO>::Compute(m, options.core, res, out.summary, progress);
+  if (!st.ok) {
+    out.error = QStringLiteral("Normal Vector Voting: ") + QString::fromStdString(st.message) +
+                (st.cancelled ? QString() : QStringLiteral(" The mesh was not changed."));
+    return out;
+  }
+  // Only now is the mesh touched: enable the components and write every output.
+  const auto needs = nvv::ApplyResults<CMeshO>::NeedsFor(options);
+  int mask = MeshModel::MM_VERTCURVDIR;
+  if (needs.quality) mask |= MeshModel::MM_VERTQUALITY;
+  if (needs.color) mask |= MeshModel::MM_VERTCOLOR;
+  mm.updateDataMask(mask);
+  nvv::ApplyResults<CMeshO>::Apply(m, res, options);
+  if (cb) cb(100, "Normal vector voting: done");
+
+  out.ok = true;
+  out.log << QString::fromStdString(nvv::SummaryLine(out.summary));
+  out.log << QStringLiteral("Normal vector voting: neighbourhood k = %1 mean edge lengths -> absolute radius %2; "
+                            "crease angle %3 deg (epsilon %4), corner angle %5 deg (eta %6)%7")
+                 .arg(options.core.k).arg(out.summary.radius)
+                 .arg(options.core.creaseAngleDeg).arg(out.summary.epsilon, 0, 'g', 4)
+                 .arg(options.core.cornerAngleDeg).arg(out.summary.eta, 0, 'g', 4)
+                 .arg(out.summary.signAwareUsed ? QStringLiteral(", sign-aware rule") : QStringLiteral(", paper's rule"));
+  for (const auto& w : out.summary.warnings) out.log << QStringLiteral("Normal vector voting: warning: ") + QString::fromStdString(w);
+  return out;
+}
+
+}  // namespace nvv_meshlab
