@@ -1,0 +1,111 @@
+// Every way the tool can fail: the exit status of its class (2 arguments, 3 input, 4 refused
+// by the filter, 5 output) and exactly one line on stderr starting with "nvv: ".
+#include "cli_test_support.h"
+
+using namespace nvv_cli_test;
+
+namespace {
+
+class CliErrors : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    Mesh m;
+    nvv_shapes::Cube(m, 1.0, 5);
+    good_ = dir_.File("good.off");
+    ASSERT_EQ(0, vcg::tri::io::ExporterOFF<Mesh>::Save(m, good_.c_str()));
+  }
+  // Runs nvv and checks the status, the one stderr line, and that no output was left behind.
+  void ExpectFailure(int code, const std::vector<std::string>& args, const char* mentions = nullptr) {
+    const CliResult r = RunCli(args, dir_);
+    EXPECT_EQ(code, r.exitCode) << r.err;
+    EXPECT_TRUE(OneErrorLine(r));
+    if (mentions) EXPECT_NE(std::string::npos, r.err.find(mentions)) << r.err;
+    EXPECT_FALSE(Exists(Out()));
+  }
+  std::string Out() const { return dir_.File("out.ply"); }
+  std::string Write(const std::string& name, const std::string& text) {
+    WriteText(dir_.File(name), text);
+    return dir_.File(name);
+  }
+
+  TempDir dir_;
+  std::string good_;
+};
+
+}  // namespace
+
+TEST_F(CliErrors, MissingInputIs3) {
+  ExpectFailure(3, {dir_.File("no_such_mesh.off"), Out()}, "no_such_mesh.off");
+}
+
+TEST_F(CliErrors, CorruptInputIs3) {
+  ExpectFailure(3, {Write("garbage.ply", "this is not a mesh\n\x01\x02\x03"), Out()}, "garbage.ply");
+  ExpectFailure(3, {Write("garbage.off", "hello world\n1 2 3\n"), Out()});
+  ExpectFailure(3, {Write("garbage.stl", "not an stl at all"), Out()});
+  ExpectFailure(3, {Write("bad_index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"), Out()});
+  // A binary PLY cut short in its vertex data.
+  const std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 100\nproperty float x\n"
+                          "property float y\nproperty float z\nelement face 10\n"
+                          "property list uchar int vertex_indices\nend_header\n" + std::string(40, '\0');
+  ExpectFailure(3, {Write("truncated.ply", ply), Out()});
+  ExpectFailure(3, {dir_.Path(), Out()}, "directory");
+}
+
+TEST_F(CliErrors, UnsupportedExtensionIs3) {
+  ExpectFailure(3, {Write("mesh.xyz", "0 0 0\n"), Out()}, ".xyz");
+  ExpectFailure(3, {Write("mesh", "OFF\n0 0 0\n"), Out()}, "no extension");
+}
+
+TEST_F(CliErrors, BadArgumentsAre2) {
+  ExpectFailure(2, {"--no_such_option", "1", good_, Out()}, "--no_such_option");
+  ExpectFailure(2, {"-x", good_, Out()}, "-x");
+  ExpectFailure(2, {"--neighbourhood_k", "-1", good_, Out()}, "neighbourhood_k");
+  ExpectFailure(2, {"--neighbourhood_k", "0", good_, Out()});
+  ExpectFailure(2, {"--crease_angle", "120", good_, Out()}, "crease_angle");
+  ExpectFailure(2, {"--corner_angle", "abc", good_, Out()}, "corner_angle");
+  ExpectFailure(2, {"--absolute_radius", "nan", good_, Out()});
+  ExpectFailure(2, {"--max_neighbourhood", "3.5", good_, Out()});
+  ExpectFailure(2, {"--max_neighbourhood", "8", good_, Out()});
+  ExpectFailure(2, {"--quality", "colourful", good_, Out()}, "shape_index");
+  ExpectFailure(2, {"--quality", "10", good_, Out()});
+  ExpectFailure(2, {"--stop_at_creases", "maybe", good_, Out()});
+  ExpectFailure(2, {"--threads", "-2", good_, Out()});
+  ExpectFailure(2, {"--ascii=yes", good_, Out()});
+  ExpectFailure(2, {good_, Out(), "--crease_angle"}, "needs a value");
+  ExpectFailure(2, {}, "missing");
+  ExpectFailure(2, {good_}, "missing");
+  ExpectFailure(2, {good_, Out(), dir_.File("third.ply")}, "too many");
+  ExpectFailure(2, {good_, dir_.File("out.off")}, ".ply");
+  // Arguments are checked before the input is read.
+  ExpectFailure(2, {"--crease_angle", "120", dir_.File("missing.off"), Out()});
+}
+
+TEST_F(CliErrors, MeshTheFilterRefusesIs4) {
+  const std::string pointCloud = Write("cloud.ply",
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "end_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  ExpectFailure(4, {pointCloud, Out()}, "point cloud");
+  const std::string empty = Write("empty.ply",
+      "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 0\nproperty list uchar int vertex_indices\nend_header\n");
+  ExpectFailure(4, {empty, Out()}, "empty");
+  const std::string flat = Write("degenerate.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 0\n3 0 1 2\n3 1 2 3\n");
+  ExpectFailure(4, {flat, Out()}, "zero area");
+}
+
+TEST_F(CliErrors, UnwritableOutputIs5) {
+  const CliResult r = RunCli({good_, "/nonexistent_nvv_dir/sub/out.ply"}, dir_);
+  EXPECT_EQ(5, r.exitCode);
+  EXPECT_TRUE(OneErrorLine(r));
+  EXPECT_EQ("", r.out) << "refused before the computation";
+  // The output name is an existing directory.
+  ASSERT_EQ(0, ::mkdir(dir_.File("dir.ply").c_str(), 0755));
+  const CliResult d = RunCli({good_, dir_.File("dir.ply")}, dir_);
+  EXPECT_EQ(5, d.exitCode);
+  EXPECT_TRUE(OneErrorLine(d));
+  // A folder without write permission (meaningless for root, who may write anywhere).
+  if (::geteuid() != 0) {
+    ASSERT_EQ(0, ::mkdir(dir_.File("ro").c_str(), 0555));
+    ExpectFailure(5, {good_, dir_.File("ro/out.ply")});
+  }
+}

@@ -1,0 +1,217 @@
+// Every parameter of the table reaches the filter: for each option the tool's file equals the
+// core run in-process with that option, differs from the defaults' file where the option has
+// an effect, and the visible outputs (selection, quality, colour, curvature) mean what they say.
+#include <functional>
+
+#include "cli_test_support.h"
+
+using namespace nvv_cli_test;
+
+namespace {
+
+// The sample as an OFF file, written once for all tests of this file.
+class CliOptions : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new TempDir;
+    Mesh m;
+    SampleMesh(m);
+    input_ = dir_->File("sample.off");
+    ASSERT_EQ(0, vcg::tri::io::ExporterOFF<Mesh>::Save(m, input_.c_str()));
+  }
+  static void TearDownTestSuite() {
+    delete dir_;
+    dir_ = nullptr;
+  }
+  // Runs nvv with `args` on the sample and reads its file.
+  static nvv::ResultPlyData Run(const std::vector<std::string>& args, CliResult* result = nullptr) {
+    TempDir out;
+    std::vector<std::string> all = args;
+    all.push_back(input_);
+    all.push_back(out.File("out.ply"));
+    const CliResult r = RunCli(all, out);
+    EXPECT_EQ(0, r.exitCode) << r.err;
+    nvv::ResultPlyData data;
+    std::string error;
+    EXPECT_TRUE(nvv::ReadResultPly(out.File("out.ply"), data, error)) << error;
+    if (result) *result = r;
+    return data;
+  }
+  static std::vector<nvv::ResultPlyVertex> ReferenceRecords(const nvv::FilterOptions& o) {
+    Reference ref;
+    EXPECT_TRUE(RunReference(input_, o, ref)) << ref.st.message;
+    return ref.records;
+  }
+
+  static TempDir* dir_;
+  static std::string input_;
+};
+TempDir* CliOptions::dir_ = nullptr;
+std::string CliOptions::input_;
+
+struct OptionCase {
+  const char* label;
+  std::vector<std::string> args;       // the option under test (plus its baseline)
+  std::vector<std::string> baseline;   // what it is compared against (empty: the defaults)
+  std::function<void(nvv::FilterOptions&)> set;
+  bool changesOutput;
+};
+
+std::vector<OptionCase> Cases() {
+  using O = nvv::FilterOptions;
+  return {
+    {"neighbourhood_k", {"--neighbourhood_k", "5"}, {}, [](O& o) { o.core.k = 5; }, true},
+    {"absolute_radius", {"--absolute_radius", "0.45"}, {}, [](O& o) { o.core.absoluteRadius = 0.45; }, true},
+    {"crease_angle", {"--crease_angle", "20"}, {}, [](O& o) { o.core.creaseAngleDeg = 20; }, true},
+    {"corner_angle", {"--corner_angle", "30"}, {}, [](O& o) { o.core.cornerAngleDeg = 30; }, true},
+    // The quadric fit already leaves out neighbours across a crease; the paper's Taubin votes
+    // show whether the march stops there.
+    {"stop_at_creases", {"--curvature_fit", "taubin", "--stop_at_creases", "false"}, {"--curvature_fit", "taubin"},
+     [](O& o) { o.core.fit = nvv::CurvatureFit::PaperTaubin; o.core.stopAtCreases = false; }, true},
+    {"curvature_fit_taubin", {"--curvature_fit", "taubin"}, {},
+     [](O& o) { o.core.fit = nvv::CurvatureFit::PaperTaubin; }, true},
+    {"curvature_fit_euler", {"--curvature_fit", "euler"}, {},
+     [](O& o) { o.core.fit = nvv::CurvatureFit::EulerLeastSquares; }, true},
+    {"class_rule", {"--class_rule", "paper"}, {}, [](O& o) { o.core.classRule = nvv::ClassRule::PaperOrder; }, true},
+    {"update_normals", {"--update_normals", "false"}, {}, [](O& o) { o.updateNormals = false; }, true},
+    {"quality_gaussian", {"--quality", "gaussian"}, {}, [](O& o) { o.quality = nvv::QualityMode::GaussianCurvature; }, true},
+    {"quality_shape_index", {"--quality", "shape_index"}, {}, [](O& o) { o.quality = nvv::QualityMode::ShapeIndex; }, true},
+    {"quality_cusp_angle", {"--quality", "cusp_angle"}, {}, [](O& o) { o.quality = nvv::QualityMode::CuspAngle; }, true},
+    {"quality_keep", {"--quality", "keep"}, {}, [](O& o) { o.quality = nvv::QualityMode::Keep; }, true},
+    {"color_ramp", {"--color", "ramp"}, {}, [](O& o) { o.color = nvv::ColorMode::QualityRamp; }, true},
+    {"color_keep", {"--color", "keep"}, {}, [](O& o) { o.color = nvv::ColorMode::Keep; }, true},
+    {"color_clamp_percentile", {"--color", "ramp", "--color_clamp_percentile", "20"}, {"--color", "ramp"},
+     [](O& o) { o.color = nvv::ColorMode::QualityRamp; o.clampPercentile = 20; }, true},
+    {"selection", {"--selection", "corners"}, {}, [](O& o) { o.selection = nvv::SelectionMode::CornersOnly; }, true},
+    {"max_neighbourhood", {"--max_neighbourhood", "16"}, {}, [](O& o) { o.core.maxNeighbourhood = 16; }, true},
+  };
+}
+
+void PrintTo(const OptionCase& c, std::ostream* os) { *os << c.label; }
+
+class EveryOption : public CliOptions, public ::testing::WithParamInterface<OptionCase> {};
+
+}  // namespace
+
+TEST_P(EveryOption, ReachesTheFilter) {
+  const OptionCase& c = GetParam();
+  nvv::FilterOptions o = nvv::DefaultOptions();
+  c.set(o);
+  const nvv::ResultPlyData data = Run(c.args);
+  EXPECT_TRUE(SameRecords(ReferenceRecords(o), data.vertices));
+  const nvv::ResultPlyData base = Run(c.baseline);
+  if (c.changesOutput) EXPECT_FALSE(SameRecords(base.vertices, data.vertices)) << "the option had no effect";
+  // The header records the value the run used.
+  bool recorded = false;
+  const std::string expect = "nvv " + c.args[c.args.size() - 2] + " " + c.args.back();
+  for (const auto& comment : data.comments) recorded = recorded || comment == expect;
+  EXPECT_TRUE(recorded) << expect;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cli, EveryOption, ::testing::ValuesIn(Cases()),
+                         [](const ::testing::TestParamInfo<OptionCase>& i) { return std::string(i.param.label); });
+
+TEST_F(CliOptions, EveryTableParameterIsCovered) {
+  for (const auto& spec : nvv::FilterParameterTable()) {
+    bool covered = false;
+    for (const auto& c : Cases())
+      for (const auto& a : c.args) covered = covered || a == std::string("--") + spec.name;
+    EXPECT_TRUE(covered) << spec.name;
+  }
+}
+
+TEST_F(CliOptions, SelectionSelectsTheClasses) {
+  const std::vector<std::pair<const char*, std::function<bool(int)>>> modes = {
+    {"none", [](int) { return false; }},
+    {"creases", [](int c) { return c == 1 || c == 2; }},
+    {"corners", [](int c) { return c == 2; }},
+    {"surface", [](int c) { return c == 0; }},
+  };
+  for (const auto& mode : modes) {
+    SCOPED_TRACE(mode.first);
+    const nvv::ResultPlyData d = Run({"--selection", mode.first});
+    std::size_t selected = 0;
+    for (const auto& v : d.vertices) {
+      EXPECT_EQ(mode.second(v.cls), v.selected == 1);
+      selected += v.selected;
+    }
+    if (std::string(mode.first) != "none") EXPECT_GT(selected, 0u);
+  }
+}
+
+TEST_F(CliOptions, QualityHoldsTheChosenValue) {
+  const nvv::ResultPlyData cls = Run({"--quality", "class"});
+  for (const auto& v : cls.vertices) EXPECT_EQ(float(v.cls), v.quality);
+  const nvv::ResultPlyData k1 = Run({"--quality", "k1"});
+  for (const auto& v : k1.vertices) EXPECT_EQ(v.k1, v.quality);
+  const nvv::ResultPlyData k2 = Run({"--quality", "k2"});
+  for (const auto& v : k2.vertices) EXPECT_EQ(v.k2, v.quality);
+  const nvv::ResultPlyData mean = Run({});
+  for (const auto& v : mean.vertices) EXPECT_NEAR(0.5 * (double(v.k1) + v.k2), v.quality, 1e-6 + 1e-6 * std::abs(v.k1));
+  const nvv::ResultPlyData cusp = Run({"--quality", "cusp_angle"});
+  std::size_t creases = 0;
+  for (const auto& v : cusp.vertices) {
+    EXPECT_NEAR(v.cuspAngleDeg, v.quality, 1e-3);
+    creases += v.cls == 1 && v.quality > 45.0f;
+  }
+  EXPECT_GT(creases, 0u) << "the cube's and the roof's creases have cusp angles of 90 and 140 degrees";
+}
+
+TEST_F(CliOptions, ColourFollowsTheChosenMode) {
+  const nvv::ResultPlyData classes = Run({});
+  for (const auto& v : classes.vertices) {
+    const vcg::Color4b c = nvv::ClassColor(nvv::VertexClass(v.cls));
+    for (int j = 0; j < 4; ++j) EXPECT_EQ(c[j], v.color[j]);
+  }
+  const nvv::ResultPlyData keep = Run({"--color", "keep"});
+  for (const auto& v : keep.vertices)
+    for (int j = 0; j < 4; ++j) EXPECT_EQ(255, v.color[j]) << "an OFF without colours loads white";
+  const nvv::ResultPlyData ramp = Run({"--color", "ramp", "--quality", "gaussian"});
+  std::size_t notClassColour = 0;
+  for (const auto& v : ramp.vertices) {
+    const vcg::Color4b c = nvv::ClassColor(nvv::VertexClass(v.cls));
+    notClassColour += c[0] != v.color[0] || c[1] != v.color[1] || c[2] != v.color[2];
+  }
+  EXPECT_GT(notClassColour, ramp.vertices.size() / 2);
+}
+
+TEST_F(CliOptions, TaubinFitGivesOtherCurvaturesThanTheQuadric) {
+  const nvv::ResultPlyData quadric = Run({});
+  const nvv::ResultPlyData taubin = Run({"--curvature_fit", "taubin"});
+  ASSERT_EQ(quadric.vertices.size(), taubin.vertices.size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < quadric.vertices.size(); ++i) {
+    EXPECT_GE(taubin.vertices[i].k1, taubin.vertices[i].k2);
+    differ += quadric.vertices[i].k1 != taubin.vertices[i].k1;
+  }
+  EXPECT_GT(differ, quadric.vertices.size() / 4);
+}
+
+TEST_F(CliOptions, NeighbourhoodCapIsReportedInFlagsAndSummary) {
+  CliResult r;
+  const nvv::ResultPlyData d = Run({"--max_neighbourhood", "16"}, &r);
+  std::size_t capped = 0;
+  for (const auto& v : d.vertices) capped += (v.flags & nvv::kNeighbourhoodCapped) != 0;
+  EXPECT_GT(capped, 0u);
+  EXPECT_NE(std::string::npos, r.out.find("warning: " + std::to_string(capped) + " vertices reached the neighbourhood cap"))
+      << r.out;
+}
+
+TEST_F(CliOptions, AbsoluteRadiusIsTheRadiusUsed) {
+  CliResult r;
+  Run({"--absolute_radius", "0.45"}, &r);
+  EXPECT_DOUBLE_EQ(0.45, PrintedRadius(r.out));
+}
+
+TEST_F(CliOptions, SpellingsOfOneValueGiveTheSameFile) {
+  auto same = [&](const std::vector<std::string>& a, const std::vector<std::string>& b) {
+    EXPECT_TRUE(SameRecords(Run(a).vertices, Run(b).vertices));
+  };
+  same({"--quality", "class"}, {"--quality", "6"});
+  same({"--quality", "class"}, {"--quality=class"});
+  same({"--curvature_fit", "euler"}, {"--curvature_fit", "2"});
+  same({"--stop_at_creases", "no"}, {"--stop_at_creases", "0"});
+  same({"--stop_at_creases", "FALSE"}, {"--stop_at_creases=false"});
+  same({"--update_normals", "yes"}, {});
+  same({"--threads", "1"}, {"--threads", "2"});
+}
