@@ -8,6 +8,7 @@
 #define NVV_CORE_FILTER_OPTIONS_H
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -130,9 +131,12 @@ inline std::string SetOption(FilterOptions& o, const std::string& name, double v
   if (!std::isfinite(value)) return std::string("Parameter '") + spec->name + "' is not a finite number.";
   if (spec->type == ParamType::Enum && (value != std::floor(value) || value < 0 || value >= double(spec->choices.size())))
     return std::string("Parameter '") + spec->name + "' must be one of its " + std::to_string(spec->choices.size()) + " choices.";
-  if ((spec->type == ParamType::Float || spec->type == ParamType::Int) && (value < spec->minValue || value > spec->maxValue))
-    return std::string("Parameter '") + spec->name + "' = " + std::to_string(value) + " is outside [" +
-           std::to_string(spec->minValue) + ", " + std::to_string(spec->maxValue) + "].";
+  if ((spec->type == ParamType::Float || spec->type == ParamType::Int) && (value < spec->minValue || value > spec->maxValue)) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "Parameter '%s' (%s) = %g is outside its range [%g, %g].", spec->name, spec->label,
+                  value, spec->minValue, spec->maxValue);
+    return buf;
+  }
   const int iv = int(value);
   if (name == "neighbourhood_k") o.core.k = value;
   else if (name == "absolute_radius") o.core.absoluteRadius = value;

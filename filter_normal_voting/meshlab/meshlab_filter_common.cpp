@@ -10,27 +10,17 @@ QString FilterName() { return QString::fromUtf8(nvv::kFilterName); }
 QString PythonName() { return QString::fromUtf8(nvv::kPythonFilterName); }
 
 QString FilterInfo() {
-  QString s = QStringLiteral(
+  // Short, like MeshLab's own filters: each parameter's help is its tooltip in the dialog.
+  return QStringLiteral(
       "Finds creases and corners and estimates normals and principal curvatures on noisy meshes by "
-      "<b>Normal Vector Voting</b>. Every vertex collects votes from the triangles of its geodesic "
-      "neighbourhood (found by fast marching on the surface); the votes' covariance tells whether the "
-      "vertex lies on a smooth surface, on a crease between two surfaces, or at a corner. Surface vertices "
-      "then get a normal, principal curvatures K1 &gt;= K2 and principal directions PD1, PD2 from their "
-      "same-side neighbours only, so creases do not blur the curvature of the surfaces beside them.<br><br>"
-      "<b>Outputs</b>: vertex normals (optional), vertex quality and colour as chosen, vertex selection "
-      "(optional), curvature directions PD1/PD2 with K1 &gt;= K2 (PD1 is always the direction of the "
-      "larger curvature K1; a sphere with outward normals has K1 = K2 = +1/R), and the per-vertex "
-      "attributes nvv_class (0 surface, 1 crease, 2 corner, 3 unclassified), nvv_surface_saliency, "
-      "nvv_crease_saliency, nvv_corner_saliency, nvv_cusp_angle (degrees), nvv_crease_curvature and "
-      "nvv_crease_tangent, which the PLY save dialog offers as custom attributes.<br><br>"
-      "<b>Parameters</b>:<ul>");
-  for (const auto& p : nvv::FilterParameterTable())
-    s += QStringLiteral("<li><b>%1</b> (<i>%2</i>): %3</li>")
-             .arg(QString::fromUtf8(p.label), QString::fromUtf8(p.name), QString::fromUtf8(p.help).toHtmlEscaped());
-  s += QStringLiteral(
-      "</ul><i>D. L. Page, Y. Sun, A. F. Koschan, J. Paik, M. A. Abidi</i>, <b>\"Normal Vector Voting: Crease "
-      "Detection and Curvature Estimation on Large, Noisy Meshes\"</b>, Graphical Models 64 (2002) 199-229.");
-  return s;
+      "<b>Normal Vector Voting</b>: the triangles of each vertex's geodesic neighbourhood vote for its "
+      "orientation, which classifies it as surface, crease or corner; surface vertices get curvature from "
+      "their own side of any crease.<br>"
+      "Writes vertex normals, quality and colour as chosen, PD1/PD2 with K1 &gt;= K2 (PD1 = direction of "
+      "K1), an optional selection, and the attributes nvv_class, nvv_*_saliency, nvv_cusp_angle, "
+      "nvv_crease_curvature, nvv_crease_tangent.<br>"
+      "<i>D. L. Page, Y. Sun, A. F. Koschan, J. Paik, M. A. Abidi</i>, <b>\"Normal Vector Voting: Crease "
+      "Detection and Curvature Estimation on Large, Noisy Meshes\"</b>, Graphical Models 64 (2002).");
 }
 
 void AddParameters(RichParameterList& par) {

@@ -1,0 +1,230 @@
+// The plugin inside Debian's real meshlabserver 2020.09: the filter is found, every parameter of
+// the table is honoured, outputs land in the saved PLY with the core's numbers, bad input exits
+// non-zero with the reason, and a chain with MeshLab's own filters preserves creases.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+
+#include "../test_mesh.h"
+#include "apply/apply_results.h"
+#include "core/normal_vector_voting.h"
+#include "meshlab_runner.h"
+#include "sample_meshes/synthetic_shapes.h"
+#include "scripting/mlx_script.h"
+
+#include <wrap/io_trimesh/export_ply.h>
+
+using namespace nvv_ml;
+
+namespace {
+
+const std::string kSamples = NVV_SAMPLE_MESHES;
+const std::string kCad = kSamples + "/cad_part_noise5.ply";
+
+std::string Out(const std::string& name) { return TempDir() + "/" + name + ".ply"; }
+
+// Runs the filter alone with some parameters changed; asserts success and reads the result.
+std::unique_ptr<MMesh> RunFilter(const std::string& in, const std::map<std::string, std::string>& values,
+                                 const std::string& tag, ServerRun* runOut = nullptr) {
+  const ServerRun r = RunServer(in, Out(tag), nvv::MlxScript(values));
+  EXPECT_EQ(0, r.exitCode) << r.output;
+  EXPECT_NE(std::string::npos, r.output.find("Normal vector voting:")) << r.output;
+  std::unique_ptr<MMesh> m(new MMesh);
+  EXPECT_TRUE(ReadPly(Out(tag), *m)) << Out(tag);
+  if (runOut) *runOut = r;
+  return m;
+}
+
+int CountColour(const MMesh& m, const vcg::Color4b& c) {
+  int n = 0;
+  for (const auto& v : m.vert) n += v.cC() == c;
+  return n;
+}
+double MaxQualityDiff(const MMesh& a, const MMesh& b) {
+  double d = 0;
+  for (std::size_t i = 0; i < a.vert.size(); ++i) d = std::max(d, double(std::abs(a.vert[i].cQ() - b.vert[i].cQ())));
+  return d;
+}
+double MaxNormalDiff(const MMesh& a, const MMesh& b) {
+  double d = 0;
+  for (std::size_t i = 0; i < a.vert.size(); ++i) d = std::max(d, double((a.vert[i].cN() - b.vert[i].cN()).Norm()));
+  return d;
+}
+int ColourDiffs(const MMesh& a, const MMesh& b) {
+  int n = 0;
+  for (std::size_t i = 0; i < a.vert.size(); ++i) n += !(a.vert[i].cC() == b.vert[i].cC());
+  return n;
+}
+
+// A roof of 150 deg between its sheets, written to a PLY (only the sign-aware rule finds its ridge).
+std::string ObtuseRoof() {
+  const std::string path = TempDir() + "/roof150.ply";
+  nvv_test::TMesh m;
+  nvv_shapes::Roof(m, 150.0);
+  vcg::tri::io::ExporterPLY<nvv_test::TMesh>::Save(m, path.c_str(), 0, true);
+  return path;
+}
+
+}  // namespace
+
+TEST(MeshLabServer, DefaultRunMatchesTheCoreInProcess) {
+  const auto outPtr = RunFilter(kCad, {}, "default");
+  const MMesh& out = *outPtr;
+  MMesh in;
+  ASSERT_TRUE(ReadPly(kCad, in));
+  ASSERT_EQ(in.vert.size(), out.vert.size());
+  std::vector<nvv::VertexResult> res;
+  nvv::Summary sum;
+  ASSERT_TRUE(vcg::tri::NormalVectorVoting<MMesh>::Compute(in, nvv::DefaultOptions().core, res, sum).ok);
+  bool valid;
+  int surface = 0, crease = 0;
+  for (std::size_t i = 0; i < in.vert.size(); ++i) {
+    const double q = nvv::QualityValue(res[i], nvv::QualityMode::MeanCurvature, valid);
+    EXPECT_NEAR(q, out.vert[i].cQ(), 1e-6 + 1e-5 * std::abs(q)) << i;
+    EXPECT_EQ(nvv::ClassColor(res[i].cls), out.vert[i].cC()) << i;
+    if (res[i].Has(nvv::kNormalValid))
+      EXPECT_NEAR(0.0, (out.vert[i].cN() - vcg::Point3f(res[i].normal[0], res[i].normal[1], res[i].normal[2])).Norm(), 1e-5);
+    surface += res[i].cls == nvv::VertexClass::Surface;
+    crease += res[i].cls == nvv::VertexClass::Crease;
+  }
+  EXPECT_GT(surface, 5000);
+  EXPECT_GT(crease, 100);
+}
+
+// Every parameter of the table has a case here that shows its effect; a new parameter without
+// one fails the test.
+TEST(MeshLabServer, EveryParameterIsHonoured) {
+  const auto basePtr = RunFilter(kCad, {}, "base");
+  const MMesh& base = *basePtr;
+  const vcg::Color4b red = nvv::ClassColor(nvv::VertexClass::Crease), blue = nvv::ClassColor(nvv::VertexClass::Corner);
+  std::set<std::string> covered;
+  auto check = [&](const std::string& name, const std::string& value, const std::function<void(const MMesh&, const ServerRun&)>& expect,
+                   const std::map<std::string, std::string>& also = {}, const std::string& input = "") {
+    covered.insert(name);
+    std::map<std::string, std::string> values = also;
+    values[name] = value;
+    ServerRun run;
+    const auto mPtr = RunFilter(input.empty() ? kCad : input, values, name, &run);
+    const MMesh& m = *mPtr;
+    SCOPED_TRACE(name + "=" + value);
+    if (input.empty()) ASSERT_EQ(base.vert.size(), m.vert.size());
+    expect(m, run);
+  };
+  check("neighbourhood_k", "6", [&](const MMesh& m, const ServerRun&) { EXPECT_GT(MaxQualityDiff(base, m), 1e-3); });
+  check("absolute_radius", "3.5", [&](const MMesh& m, const ServerRun& r) {
+    EXPECT_GT(MaxQualityDiff(base, m), 1e-3);
+    EXPECT_NE(std::string::npos, r.output.find("radius 3.5")) << r.output;
+  });
+  // A lower crease angle raises epsilon (Eq. 11): more creases, and, through eps * eta, more corners.
+  check("crease_angle", "30", [&](const MMesh& m, const ServerRun&) {
+    std::printf("[crease_angle 30] crease %d -> %d, corner %d -> %d\n", CountColour(base, red), CountColour(m, red),
+                CountColour(base, blue), CountColour(m, blue));
+    EXPECT_GT(CountColour(m, red) + CountColour(m, blue), CountColour(base, red) + CountColour(base, blue) + 100);
+  });
+  check("corner_angle", "10", [&](const MMesh& m, const ServerRun&) { EXPECT_GT(CountColour(m, blue), CountColour(base, blue) + 10); });
+  check("stop_at_creases", "false", [&](const MMesh& m, const ServerRun&) { EXPECT_GT(MaxQualityDiff(base, m), 1e-3); },
+        {{"curvature_fit", "1"}});
+  check("curvature_fit", "1", [&](const MMesh& m, const ServerRun&) { EXPECT_GT(MaxQualityDiff(base, m), 1e-3); });
+  const std::string roof = ObtuseRoof();
+  EXPECT_GT(CountColour(*RunFilter(roof, {}, "roof_base"), red), 20);
+  check("class_rule", "1", [&](const MMesh& m, const ServerRun&) { EXPECT_EQ(0, CountColour(m, red)); }, {}, roof);
+  check("update_normals", "false", [&](const MMesh& m, const ServerRun&) {
+    MMesh in;
+    ASSERT_TRUE(ReadPly(kCad, in));
+    EXPECT_LT(MaxNormalDiff(in, m), 1e-6);
+    EXPECT_GT(MaxNormalDiff(base, m), 1e-2);
+  });
+  check("quality", "6", [&](const MMesh& m, const ServerRun&) {
+    std::set<float> values;
+    for (const auto& v : m.vert) values.insert(v.cQ());
+    EXPECT_EQ((std::set<float>{0.f, 1.f, 2.f}), values);
+  });
+  check("color", "1", [&](const MMesh& m, const ServerRun&) { EXPECT_GT(ColourDiffs(base, m), int(m.vert.size()) / 2); });
+  check("color_clamp_percentile", "30", [&](const MMesh& m, const ServerRun&) {
+    EXPECT_GT(ColourDiffs(*RunFilter(kCad, {{"color", "1"}}, "ramp_default"), m), int(m.vert.size()) / 4);
+  }, {{"color", "1"}});
+  // Selection is not saved in PLY: delete the selected vertices in the same script instead.
+  covered.insert("selection");
+  {
+    const std::string del = " <filter name=\"Delete Selected Vertices\"/>\n";
+    const ServerRun r = RunServer(kCad, Out("selection"), nvv::MlxScript({{"selection", "1"}}, del));
+    ASSERT_EQ(0, r.exitCode) << r.output;
+    MMesh m;
+    ASSERT_TRUE(ReadPly(Out("selection"), m));
+    EXPECT_EQ(base.vert.size() - CountColour(base, red) - CountColour(base, blue), m.vert.size());
+  }
+  check("max_neighbourhood", "16", [&](const MMesh& m, const ServerRun& r) {
+    EXPECT_GT(MaxQualityDiff(base, m), 1e-3);
+    EXPECT_NE(std::string::npos, r.output.find("neighbourhood cap")) << r.output;
+  });
+  for (const auto& p : nvv::FilterParameterTable()) EXPECT_TRUE(covered.count(p.name)) << "no test for parameter " << p.name;
+}
+
+TEST(MeshLabServer, RefusedInputExitsNonZeroWithTheReason) {
+  // A point cloud: vertices, no faces.
+  const std::string cloud = TempDir() + "/cloud.ply";
+  {
+    std::ofstream f(cloud);
+    f << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
+         "0 0 0\n1 0 0\n0 1 0\n1 1 1\n";
+  }
+  ServerRun r = RunServer(cloud, Out("cloud_out"), nvv::MlxScript());
+  EXPECT_NE(0, r.exitCode);
+  EXPECT_NE(std::string::npos, r.output.find("no faces")) << r.output;
+  // An absurd parameter.
+  r = RunServer(kCad, Out("bad_k"), nvv::MlxScript({{"neighbourhood_k", "0"}}));
+  EXPECT_NE(0, r.exitCode);
+  EXPECT_NE(std::string::npos, r.output.find("neighbourhood_k")) << r.output;
+  r = RunServer(kCad, Out("bad_angle"), nvv::MlxScript({{"crease_angle", "120"}}));
+  EXPECT_NE(0, r.exitCode);
+  EXPECT_NE(std::string::npos, r.output.find("crease_angle")) << r.output;
+}
+
+// The README's recipe: select creases, invert, Laplacian-smooth the selection only.
+TEST(MeshLabServer, ChainSmoothingKeepsCreasesAndRemovesNoise) {
+  const std::string chain =
+      " <filter name=\"Invert Selection\">\n"
+      "  <Param name=\"InvFaces\" type=\"RichBool\" value=\"false\"/>\n"
+      "  <Param name=\"InvVerts\" type=\"RichBool\" value=\"true\"/>\n"
+      " </filter>\n"
+      " <filter name=\"Laplacian Smooth\">\n"
+      "  <Param name=\"stepSmoothNum\" type=\"RichInt\" value=\"3\"/>\n"
+      "  <Param name=\"Boundary\" type=\"RichBool\" value=\"true\"/>\n"
+      "  <Param name=\"cotangentWeight\" type=\"RichBool\" value=\"false\"/>\n"
+      "  <Param name=\"Selected\" type=\"RichBool\" value=\"true\"/>\n"
+      " </filter>\n";
+  const ServerRun r = RunServer(kCad, Out("chain"), nvv::MlxScript({{"selection", "1"}}, chain));
+  ASSERT_EQ(0, r.exitCode) << r.output;
+  MMesh noisy, clean, smoothed;
+  ASSERT_TRUE(ReadPly(kCad, noisy));
+  ASSERT_TRUE(ReadPly(kSamples + "/cad_part.ply", clean));
+  ASSERT_TRUE(ReadPly(Out("chain"), smoothed));
+  ASSERT_EQ(noisy.vert.size(), smoothed.vert.size());
+  const vcg::Color4b red = nvv::ClassColor(nvv::VertexClass::Crease), blue = nvv::ClassColor(nvv::VertexClass::Corner);
+  int kept = 0;
+  double before = 0, after = 0;
+  int flat = 0;
+  for (std::size_t i = 0; i < noisy.vert.size(); ++i) {
+    const auto& c = smoothed.vert[i].cC();
+    if (c == red || c == blue) {  // selected by our filter: must not move
+      EXPECT_EQ(noisy.vert[i].cP(), smoothed.vert[i].cP()) << i;
+      ++kept;
+    }
+    // Bottom face (z = 0) away from its edges: distance to the true plane.
+    const auto& p = clean.vert[i].cP();
+    if (std::abs(p[2]) < 1e-6 && std::abs(p[0]) < 8 && std::abs(p[1]) < 10) {
+      before += double(noisy.vert[i].cP()[2]) * noisy.vert[i].cP()[2];
+      after += double(smoothed.vert[i].cP()[2]) * smoothed.vert[i].cP()[2];
+      ++flat;
+    }
+  }
+  EXPECT_GT(kept, 100);
+  ASSERT_GT(flat, 200);
+  const double rmsBefore = std::sqrt(before / flat), rmsAfter = std::sqrt(after / flat);
+  std::printf("[chain] %d crease/corner vertices kept in place; bottom-face noise RMS %.4f -> %.4f\n", kept, rmsBefore,
+              rmsAfter);
+  EXPECT_LT(rmsAfter, 0.5 * rmsBefore);
+}
