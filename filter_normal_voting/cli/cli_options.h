@@ -54,9 +54,13 @@ inline std::string AcceptedValues(const nvv::ParamSpec& p) {
       for (std::size_t i = 0; i < p.tokens.size(); ++i) s += (i ? ", " : "") + std::string(p.tokens[i]);
       return "one of " + s + " (or its index 0-" + std::to_string(p.tokens.size() - 1) + ")";
     }
-    case nvv::ParamType::Int:
-      return "an integer from " + FormatNumber(p.minValue) + " to " + FormatNumber(p.maxValue);
+    case nvv::ParamType::Int: {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "an integer from %.0f to %.0f", p.minValue, p.maxValue);
+      return buf;
+    }
     default:
+      if (p.maxValue >= 1e29) return "a number >= " + FormatNumber(p.minValue);
       return "a number from " + FormatNumber(p.minValue) + " to " + FormatNumber(p.maxValue);
   }
 }
