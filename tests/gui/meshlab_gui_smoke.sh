@@ -6,7 +6,7 @@
 set -euo pipefail
 prefix=$1 mesh=$2 out=$3
 mkdir -p "$out"
-for cmd in Xvfb xdotool import tesseract; do
+for cmd in Xvfb xdotool import tesseract /usr/bin/convert; do
   command -v "$cmd" >/dev/null || { echo "gui smoke: $cmd is missing (scripts/install-deps.sh installs it)"; exit 1; }
 done
 disp=""
@@ -29,7 +29,7 @@ xdotool windowmove "$wid" 0 0
 sleep 1
 shot() {
   import -window root "$out/$1.png"
-  convert "$out/$1.png" -resize 200% "$out/.shot2x.png"
+  /usr/bin/convert "$out/$1.png" -resize 200% "$out/.shot2x.png"
   tesseract "$out/.shot2x.png" - 2>/dev/null > "$out/$1.txt" || true
 }
 expect() {  # expect SHOT TEXT: the text must be on the screenshot
@@ -41,7 +41,7 @@ expect() {  # expect SHOT TEXT: the text must be on the screenshot
 # Clicks the centre of the first word WORD that OCR finds on the screen (no fixed coordinates).
 click_word() {
   import -window root "$out/.click.png"
-  convert "$out/.click.png" -resize 200% "$out/.click2x.png"  # OCR misses small UI text at 1x
+  /usr/bin/convert "$out/.click.png" -resize 200% "$out/.click2x.png"  # OCR misses small UI text at 1x
   local pos
   # psm 11 (sparse text) also finds lone button labels.
   pos=$(tesseract "$out/.click2x.png" - --psm 11 tsv 2>/dev/null |
