@@ -19,7 +19,9 @@ class CliErrors : public ::testing::Test {
     const CliResult r = RunCli(args, dir_);
     EXPECT_EQ(code, r.exitCode) << r.err;
     EXPECT_TRUE(OneErrorLine(r));
-    if (mentions) EXPECT_NE(std::string::npos, r.err.find(mentions)) << r.err;
+    if (mentions) {
+      EXPECT_NE(std::string::npos, r.err.find(mentions)) << r.err;
+    }
     EXPECT_FALSE(Exists(Out()));
   }
   std::string Out() const { return dir_.File("out.ply"); }

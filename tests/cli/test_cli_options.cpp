@@ -100,7 +100,9 @@ TEST_P(EveryOption, ReachesTheFilter) {
   const nvv::ResultPlyData data = Run(c.args);
   EXPECT_TRUE(SameRecords(ReferenceRecords(o), data.vertices));
   const nvv::ResultPlyData base = Run(c.baseline);
-  if (c.changesOutput) EXPECT_FALSE(SameRecords(base.vertices, data.vertices)) << "the option had no effect";
+  if (c.changesOutput) {
+    EXPECT_FALSE(SameRecords(base.vertices, data.vertices)) << "the option had no effect";
+  }
   // The header records the value the run used.
   bool recorded = false;
   const std::string expect = "nvv " + c.args[c.args.size() - 2] + " " + c.args.back();
@@ -135,7 +137,9 @@ TEST_F(CliOptions, SelectionSelectsTheClasses) {
       EXPECT_EQ(mode.second(v.cls), v.selected == 1);
       selected += v.selected;
     }
-    if (std::string(mode.first) != "none") EXPECT_GT(selected, 0u);
+    if (std::string(mode.first) != "none") {
+      EXPECT_GT(selected, 0u);
+    }
   }
 }
 
