@@ -29,6 +29,12 @@ TEST(FilterOptions, NamesAreUniqueAndEveryParameterIsSettable) {
     EXPECT_TRUE(names.insert(spec.name).second) << spec.name;
     nvv::FilterOptions o;
     EXPECT_EQ("", nvv::SetOption(o, spec.name, spec.defaultValue)) << spec.name;
+    EXPECT_EQ(spec.defaultValue, nvv::GetOption(o, spec.name)) << spec.name;
+    const double other = spec.type == nvv::ParamType::Float ? (spec.minValue + spec.maxValue) / 2
+                         : spec.type == nvv::ParamType::Int  ? spec.maxValue
+                                                             : (spec.defaultValue == 0 ? 1 : 0);
+    EXPECT_EQ("", nvv::SetOption(o, spec.name, other)) << spec.name;
+    EXPECT_EQ(other, nvv::GetOption(o, spec.name)) << spec.name;  // SetOption and GetOption mirror each other
     if (spec.type == nvv::ParamType::Enum) {
       EXPECT_EQ(spec.choices.size(), spec.tokens.size()) << spec.name;
       EXPECT_NE("", nvv::SetOption(o, spec.name, double(spec.choices.size()))) << spec.name;

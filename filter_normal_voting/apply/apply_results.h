@@ -112,10 +112,14 @@ class ApplyResults {
     Attributes(m, res);
   }
 
+  // Estimated normals where there is one; elsewhere (corners, unclassified) the mesh's own normal
+  // keeps its direction but is made unit length (MeshLab leaves loaded normals unnormalised).
   static void Normals(MeshType& m, const std::vector<VertexResult>& res) {
     for (std::size_t i = 0; i < m.vert.size(); ++i) {
-      if (m.vert[i].IsD() || !res[i].Has(kNormalValid)) continue;
-      m.vert[i].N() = ToCoord(res[i].normal);
+      auto& v = m.vert[i];
+      if (v.IsD()) continue;
+      if (res[i].Has(kNormalValid)) v.N() = ToCoord(res[i].normal);
+      else if (v.N().Norm() > 0 && std::isfinite(v.N().Norm())) v.N().Normalize();
     }
   }
   static void Quality(MeshType& m, const std::vector<VertexResult>& res, QualityMode mode) {

@@ -50,25 +50,15 @@ std::vector<std::string> HeaderComments(const nvv_cli::CliArgs& a) {
   std::vector<std::string> c;
   c.push_back(std::string("nvv ") + NVV_VERSION + " input " + a.input);
   for (const auto& p : nvv::FilterParameterTable()) {
-    const char* n = p.name;
-    std::string v;
-    const nvv::FilterOptions& o = a.options;
-    const std::string name(n);
-    if (name == "neighbourhood_k") v = nvv_cli::FormatNumber(o.core.k);
-    else if (name == "absolute_radius") v = nvv_cli::FormatNumber(o.core.absoluteRadius);
-    else if (name == "crease_angle") v = nvv_cli::FormatNumber(o.core.creaseAngleDeg);
-    else if (name == "corner_angle") v = nvv_cli::FormatNumber(o.core.cornerAngleDeg);
-    else if (name == "stop_at_creases") v = o.core.stopAtCreases ? "true" : "false";
-    else if (name == "curvature_fit") v = p.tokens[int(o.core.fit)];
-    else if (name == "class_rule") v = p.tokens[int(o.core.classRule)];
-    else if (name == "update_normals") v = o.updateNormals ? "true" : "false";
-    else if (name == "quality") v = p.tokens[int(o.quality)];
-    else if (name == "color") v = p.tokens[int(o.color)];
-    else if (name == "color_clamp_percentile") v = nvv_cli::FormatNumber(o.clampPercentile);
-    else if (name == "selection") v = p.tokens[int(o.selection)];
-    else if (name == "max_neighbourhood") v = std::to_string(o.core.maxNeighbourhood);
-    else continue;
-    c.push_back(std::string("nvv --") + n + " " + v);
+    const double v = nvv::GetOption(a.options, p.name);
+    std::string text;
+    switch (p.type) {
+      case nvv::ParamType::Bool: text = v != 0 ? "true" : "false"; break;
+      case nvv::ParamType::Enum: text = p.tokens[int(v)]; break;
+      case nvv::ParamType::Int: text = std::to_string(int(v)); break;
+      case nvv::ParamType::Float: text = nvv_cli::FormatNumber(v); break;
+    }
+    c.push_back(std::string("nvv --") + p.name + " " + text);
   }
   return c;
 }

@@ -70,7 +70,8 @@ inline const std::vector<ParamSpec>& FilterParameterTable() {
      60.0, 1.0, 89.0, {}, {}, false},
     {"stop_at_creases", ParamType::Bool, "Stop curvature at creases",
      "When estimating curvature, do not let a neighbourhood grow across crease and corner vertices, "
-     "so each side of an edge keeps its own curvature.",
+     "so each side of an edge keeps its own curvature. Matters most for the Taubin and Euler estimators: "
+     "the quadric fit already gives no weight to neighbours whose normal differs by the crease angle.",
      1.0, 0, 1, {}, {}, false},
     {"curvature_fit", ParamType::Enum, "Curvature estimator",
      "How the neighbourhood gives curvature. Crease-aware quadric: fits a quadratic patch to the "
@@ -86,7 +87,8 @@ inline const std::vector<ParamSpec>& FilterParameterTable() {
      0.0, 0, 1, {"Sign-aware", "Paper's eigenvalue order"}, {"sign_aware", "paper"}, true},
     {"update_normals", ParamType::Bool, "Update vertex normals",
      "Replace the normals of surface vertices by the estimated ones, and those of crease vertices by "
-     "the bisector of the two sheets. Corner and unclassified vertices keep their normal.",
+     "the bisector of the two sheets. Corner and unclassified vertices keep the direction of their normal "
+     "(made unit length).",
      1.0, 0, 1, {}, {}, false},
     {"quality", ParamType::Enum, "Vertex quality",
      "What to store in the per-vertex quality. Curvatures of non-surface vertices are 0.",
@@ -111,10 +113,28 @@ inline const std::vector<ParamSpec>& FilterParameterTable() {
      {"none", "creases", "corners", "surface"}, false},
     {"max_neighbourhood", ParamType::Int, "Neighbourhood cap (vertices)",
      "Upper bound on the vertices one neighbourhood may hold; bounds the time spent on very high "
-     "valence vertices or absurd radii. Vertices that hit it are counted in the log.",
-     4096.0, 16, 10000000, {}, {}, true},
+     "valence vertices or absurd radii. 0 = automatic: four times what a uniform mesh holds within "
+     "the radius, at least 1024. Vertices that hit it are counted in the log.",
+     0.0, 0, 10000000, {}, {}, true},
   };
   return table;
+}
+
+// The one parameter only the MeshLab filter has: a file to write the full-result PLY to (see
+// filter_normal_voting/io/result_ply.h), because MeshLab's own PLY writer cannot save curvature
+// directions or the per-vertex results from a script. The command-line tool always writes it.
+struct SaveFileSpec {
+  const char* name;
+  const char* label;
+  const char* help;
+};
+inline const SaveFileSpec& ResultPlyParameter() {
+  static const SaveFileSpec spec = {
+      "save_results_ply", "Save all results to PLY (optional)",
+      "If set, also writes every per-vertex result (class, eigenvalues, K1, K2, PD1, PD2, crease tangent, "
+      "crease curvature, cusp angle, normal, quality, colour) to this PLY file, which MeshLab's own writer "
+      "cannot do. Leave empty to skip. The folder must be writable."};
+  return spec;
 }
 
 inline const ParamSpec* FindParam(const std::string& name) {
@@ -131,6 +151,8 @@ inline std::string SetOption(FilterOptions& o, const std::string& name, double v
   if (!std::isfinite(value)) return std::string("Parameter '") + spec->name + "' is not a finite number.";
   if (spec->type == ParamType::Enum && (value != std::floor(value) || value < 0 || value >= double(spec->choices.size())))
     return std::string("Parameter '") + spec->name + "' must be one of its " + std::to_string(spec->choices.size()) + " choices.";
+  if (spec->type == ParamType::Int && value != std::floor(value))
+    return std::string("Parameter '") + spec->name + "' must be a whole number.";
   if ((spec->type == ParamType::Float || spec->type == ParamType::Int) && (value < spec->minValue || value > spec->maxValue)) {
     char buf[256];
     std::snprintf(buf, sizeof buf, "Parameter '%s' (%s) = %g is outside its range [%g, %g].", spec->name, spec->label,
@@ -152,6 +174,24 @@ inline std::string SetOption(FilterOptions& o, const std::string& name, double v
   else if (name == "selection") o.selection = SelectionMode(iv);
   else if (name == "max_neighbourhood") o.core.maxNeighbourhood = iv;
   return std::string();
+}
+
+// The value of option `name` as SetOption takes it (Bool: 0/1, Enum: index); NaN if unknown.
+inline double GetOption(const FilterOptions& o, const std::string& name) {
+  if (name == "neighbourhood_k") return o.core.k;
+  if (name == "absolute_radius") return o.core.absoluteRadius;
+  if (name == "crease_angle") return o.core.creaseAngleDeg;
+  if (name == "corner_angle") return o.core.cornerAngleDeg;
+  if (name == "stop_at_creases") return o.core.stopAtCreases ? 1 : 0;
+  if (name == "curvature_fit") return int(o.core.fit);
+  if (name == "class_rule") return int(o.core.classRule);
+  if (name == "update_normals") return o.updateNormals ? 1 : 0;
+  if (name == "quality") return int(o.quality);
+  if (name == "color") return int(o.color);
+  if (name == "color_clamp_percentile") return o.clampPercentile;
+  if (name == "selection") return int(o.selection);
+  if (name == "max_neighbourhood") return o.core.maxNeighbourhood;
+  return std::nan("");
 }
 
 // Options with every parameter at its table default.

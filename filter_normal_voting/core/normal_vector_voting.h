@@ -101,9 +101,11 @@ inline double Seconds(std::chrono::steady_clock::time_point a) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
 }
 
-// Runs body(v, march, scratch) for every vertex in parallel; false if cancelled or failed.
+enum class PassEnd { Done, Cancelled, OutOfMemory };
+
+// Runs body(v, march, scratch) for every vertex in parallel.
 template <class Scratch, class Body>
-bool ParallelOverVertices(const SurfaceGraph& g, int threads, PassProgress& progress, Body body) {
+PassEnd ParallelOverVertices(const SurfaceGraph& g, int threads, PassProgress& progress, Body body) {
   const int n = g.VertexCount();
   std::atomic<bool> failed{false};
 #pragma omp parallel num_threads(threads)
@@ -118,12 +120,20 @@ bool ParallelOverVertices(const SurfaceGraph& g, int threads, PassProgress& prog
         body(v, march, scratch);
         progress.Tick(mainThread);
       }
-    } catch (...) {  // e.g. bad_alloc: never let an exception cross the OpenMP region
+    } catch (...) {  // bad_alloc: never let an exception cross the OpenMP region
       failed.store(true);
     }
   }
-  if (failed.load()) progress.Cancel();
-  return !progress.Cancelled();
+  if (failed.load()) return PassEnd::OutOfMemory;
+  return progress.Cancelled() ? PassEnd::Cancelled : PassEnd::Done;
+}
+
+// The Status of a pass that did not finish.
+inline Status Unfinished(PassEnd end) {
+  Status st;
+  st.cancelled = end == PassEnd::Cancelled;
+  st.message = st.cancelled ? "Cancelled." : "Out of memory: the neighbourhoods did not fit. Try a smaller k.";
+  return st;
 }
 
 struct Pass2Scratch {
@@ -167,7 +177,7 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
   s1.epsilon = EpsilonFromAngle(p.creaseAngleDeg);
   s1.eta = EpsilonFromAngle(p.cornerAngleDeg);
   s1.signAware = p.classRule == ClassRule::SignAware && g.consistentlyOriented;
-  s1.maxNeighbourhood = p.maxNeighbourhood;
+  s1.maxNeighbourhood = p.maxNeighbourhood > 0 ? p.maxNeighbourhood : AutoNeighbourhoodCap(s1.radius / g.meanEdge);
   if (!std::isfinite(s1.radius) || !(s1.radius > 0)) {
     st.message = "The neighbourhood radius is not a positive finite number for this mesh.";
     return st;
@@ -187,10 +197,10 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
   {
     PassProgress prog(cb, g.VertexCount(), 0, 50, "Normal vector voting: normals and classes");
     struct None {};
-    const bool done = ParallelOverVertices<None>(g, threads, prog, [&](int v, GeodesicMarch& march, None&) {
+    const PassEnd end = ParallelOverVertices<None>(g, threads, prog, [&](int v, GeodesicMarch& march, None&) {
       VoteNormal(g, march, v, s1, out[v]);
     });
-    if (!done) { st.cancelled = true; st.message = "Cancelled."; return st; }
+    if (end != PassEnd::Done) return Unfinished(end);
   }
   sum.secondsPass1 = Seconds(t0);
   const auto t1 = std::chrono::steady_clock::now();
@@ -201,7 +211,7 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
     const double slopeWeight = 2.0 * g.meanEdge;
     PassProgress prog(cb, g.VertexCount(), 50, 100, "Normal vector voting: curvature");
     auto notSurface = [&](int x) { return out[x].cls != VertexClass::Surface; };
-    const bool done = ParallelOverVertices<Pass2Scratch>(g, threads, prog,
+    const PassEnd end = ParallelOverVertices<Pass2Scratch>(g, threads, prog,
         [&](int v, GeodesicMarch& march, Pass2Scratch& sc) {
       VertexResult& r = out[v];
       if (r.cls == VertexClass::Crease) {
@@ -242,7 +252,7 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
       }
       r.flags |= kCurvatureValid;
     });
-    if (!done) { st.cancelled = true; st.message = "Cancelled."; return st; }
+    if (end != PassEnd::Done) return Unfinished(end);
   }
   sum.secondsPass2 = Seconds(t1);
   // Fitted normals are written after the pass, so every vertex's fit saw pass-1 normals only.
@@ -264,7 +274,7 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
   }
   if (sum.capped > 0)
     sum.warnings.push_back(std::to_string(sum.capped) + " vertices reached the neighbourhood cap of " +
-                           std::to_string(p.maxNeighbourhood) + " vertices; their neighbourhood was truncated.");
+                           std::to_string(s1.maxNeighbourhood) + " vertices; their neighbourhood was truncated.");
   if (g.nonFinite > 0)
     sum.warnings.push_back(std::to_string(g.nonFinite) + " vertices have non-finite coordinates and were left out.");
   if (g.unreferenced > 0)

@@ -28,7 +28,7 @@ struct Pass1Settings {
   double sigma = 0;      // Eq. 8
   double epsilon = 2, eta = 2;
   bool signAware = true;
-  int maxNeighbourhood = 4096;
+  int maxNeighbourhood = 1024;
 };
 
 // The vote of one triangle (Eq. 6) with its weight (Eq. 8) added to V and to the oriented mean m.

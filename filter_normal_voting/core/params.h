@@ -45,9 +45,19 @@ struct Params {
   CurvatureFit fit = CurvatureFit::SheetQuadric;
   ClassRule classRule = ClassRule::SignAware;
   double sigmaFraction = 1.0 / 3.0;  // Eq. 8: sigma = sigmaFraction * g_m (paper: 1/3)
-  int maxNeighbourhood = 4096;  // cap on vertices reached by one march (bounds a fan's cost)
+  // Cap on the vertices one march may accept; 0 = automatic, AutoNeighbourhoodCap(). Bounds the
+  // cost of pathological input (a 100,000-valence fan) without truncating ordinary neighbourhoods.
+  int maxNeighbourhood = 0;
   int threads = 0;              // 0: OpenMP's default
 };
+
+// A uniform triangulation puts about (2 / sqrt 3) pi k^2 ~ 3.6 k^2 vertices within g_m = k l_ave;
+// the automatic cap allows four times that (regions up to 4x denser than average keep their whole
+// neighbourhood), and never less than 1,024.
+inline int AutoNeighbourhoodCap(double kEffective) {
+  const double c = 16.0 * kEffective * kEffective;
+  return c > 10000000.0 ? 10000000 : (c < 1024.0 ? 1024 : int(c));
+}
 
 inline double DegToRad(double d) { return d * 3.14159265358979323846 / 180.0; }
 inline double RadToDeg(double r) { return r * 180.0 / 3.14159265358979323846; }
@@ -77,8 +87,8 @@ inline std::string ValidateParams(const Params& p) {
            std::to_string(p.cornerAngleDeg) + ").";
   if (bad(p.sigmaFraction) || p.sigmaFraction < 0.01 || p.sigmaFraction > 100.0)
     return "The weight fall-off (sigma / radius) must be in [0.01, 100].";
-  if (p.maxNeighbourhood < 16 || p.maxNeighbourhood > 10000000)
-    return "The neighbourhood cap must be between 16 and 10,000,000 vertices.";
+  if (p.maxNeighbourhood != 0 && (p.maxNeighbourhood < 16 || p.maxNeighbourhood > 10000000))
+    return "The neighbourhood cap must be 0 (automatic) or between 16 and 10,000,000 vertices.";
   if (p.threads < 0 || p.threads > 4096) return "The thread count must be 0 (all) or positive.";
   const int fit = static_cast<int>(p.fit);
   if (fit < 0 || fit > 2) return "Unknown curvature fit.";
