@@ -186,13 +186,13 @@ inline bool ReadResultPly(const std::string& path, ResultPlyData& out, std::stri
 
   // Where each known vertex property goes in a ResultPlyVertex.
   struct Slot { std::ptrdiff_t offset; bool isFloat; };
-  std::map<std::string, Slot> slots;
+  std::map<std::string, Slot> fieldSlots;
   {
     ResultPlyVertex probe;
     const char* base = reinterpret_cast<const char*>(&probe);
     ForEachResultPlyField(probe, [&](const char* name, auto& field) {
       typedef typename std::decay<decltype(field)>::type T;
-      slots[name] = Slot{reinterpret_cast<const char*>(&field) - base, std::is_same<T, float>::value};
+      fieldSlots[name] = Slot{reinterpret_cast<const char*>(&field) - base, std::is_same<T, float>::value};
     });
   }
 
@@ -206,10 +206,10 @@ inline bool ReadResultPly(const std::string& path, ResultPlyData& out, std::stri
       sawVertex = true;
       std::map<std::string, bool> found;
       for (std::size_t k = 0; k < e.props.size(); ++k) {
-        auto it = slots.find(e.props[k].name);
-        if (it != slots.end() && !e.props[k].list) { where[k] = &it->second; found[it->first] = true; }
+        auto it = fieldSlots.find(e.props[k].name);
+        if (it != fieldSlots.end() && !e.props[k].list) { where[k] = &it->second; found[it->first] = true; }
       }
-      for (const auto& s : slots)
+      for (const auto& s : fieldSlots)
         if (!found.count(s.first)) { error = "vertex property '" + s.first + "' is missing"; return false; }
       out.vertices.resize(e.count);
     }

@@ -1,7 +1,12 @@
 #include "meshlab_filter_common.h"
 
+#include <vcg/complex/algorithms/update/selection.h>
+
+#include <QFileInfo>
+
 #include "apply/apply_results.h"
 #include "core/normal_vector_voting.h"
+#include "io/result_ply.h"
 
 namespace nvv_meshlab {
 
@@ -27,7 +32,7 @@ void AddParameters(RichParameterList& par) {
   for (const auto& p : nvv::FilterParameterTable()) {
     const QString name = QString::fromUtf8(p.name), label = QString::fromUtf8(p.label), help = QString::fromUtf8(p.help);
     switch (p.type) {
-      case nvv::ParamType::Float: par.addParam(RichFloat(name, float(p.defaultValue), label, help)); break;
+      case nvv::ParamType::Float: par.addParam(RichFloat(name, MESHLAB_SCALAR(p.defaultValue), label, help)); break;
       case nvv::ParamType::Int: par.addParam(RichInt(name, int(p.defaultValue), label, help)); break;
       case nvv::ParamType::Bool: par.addParam(RichBool(name, p.defaultValue != 0, label, help)); break;
       case nvv::ParamType::Enum: {
@@ -38,10 +43,15 @@ void AddParameters(RichParameterList& par) {
       }
     }
   }
+  const nvv::SaveFileSpec& save = nvv::ResultPlyParameter();
+  par.addParam(RichSaveFile(QString::fromUtf8(save.name), QString(), QStringLiteral(".ply"),
+                            QString::fromUtf8(save.label), QString::fromUtf8(save.help)));
 }
 
-QString ReadOptions(const RichParameterList& par, nvv::FilterOptions& options) {
+QString ReadOptions(const RichParameterList& par, nvv::FilterOptions& options, QString& resultPly) {
   options = nvv::DefaultOptions();
+  const QString saveName = QString::fromUtf8(nvv::ResultPlyParameter().name);
+  resultPly = par.hasParameter(saveName) ? par.getSaveFileName(saveName).trimmed() : QString();
   for (const auto& p : nvv::FilterParameterTable()) {
     const QString name = QString::fromUtf8(p.name);
     if (!par.hasParameter(name)) continue;  // scripts written for an older version keep the defaults
@@ -63,9 +73,17 @@ int OutputMask() {
          MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_VERTCURVDIR;
 }
 
-Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, vcg::CallBackPos* cb) {
+Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& resultPly, vcg::CallBackPos* cb) {
   Outcome out;
   CMeshO& m = mm.cm;
+  if (!resultPly.isEmpty()) {  // refuse an unwritable destination before any work
+    const QFileInfo dir(QFileInfo(resultPly).absolutePath());
+    if (!dir.isDir() || !dir.isWritable() || QFileInfo(resultPly).isDir()) {
+      out.error = QStringLiteral("Normal Vector Voting: cannot write the results PLY '%1' (its folder is missing or not "
+                                 "writable). The mesh was not changed.").arg(resultPly);
+      return out;
+    }
+  }
   if (m.vn == 0) {
     out.error = QStringLiteral("Normal Vector Voting: the mesh is empty.");
     return out;
@@ -76,7 +94,12 @@ Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, vcg::CallBackPos* 
     return out;
   }
   nvv::Progress progress;
+#ifdef NVV_MESHLAB_API_2025
+  // 2022.02+ ignores the callback's result (no cancelling); PyMeshLab's may return false.
+  if (cb) progress = [cb](int pos, const char* text) { cb(pos, text); return true; };
+#else
   if (cb) progress = [cb](int pos, const char* text) { return cb(pos, text); };
+#endif
   std::vector<nvv::VertexResult> res;
   const nvv::Status st = vcg::tri::NormalVectorVoting<CMeshO>::Compute(m, options.core, res, out.summary, progress);
   if (!st.ok) {
@@ -91,9 +114,19 @@ Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, vcg::CallBackPos* 
   if (needs.color) mask |= MeshModel::MM_VERTCOLOR;
   mm.updateDataMask(mask);
   nvv::ApplyResults<CMeshO>::Apply(m, res, options);
+  // MeshLab's selection filters (Delete Selected Vertices, Laplacian "selected only", ...) trust
+  // the mesh's count of selected vertices, so keep it true.
+  if (options.selection != nvv::SelectionMode::None) m.svn = int(vcg::tri::UpdateSelection<CMeshO>::VertexCount(m));
   if (cb) cb(100, "Normal vector voting: done");
 
   out.ok = true;
+  if (!resultPly.isEmpty()) {
+    std::string err;
+    if (nvv::WriteResultPly(resultPly.toStdString(), m, res, true, err))
+      out.log << QStringLiteral("Normal vector voting: all results written to %1").arg(resultPly);
+    else
+      out.log << QStringLiteral("Normal vector voting: warning: could not write %1: %2").arg(resultPly, QString::fromStdString(err));
+  }
   out.log << QString::fromStdString(nvv::SummaryLine(out.summary));
   out.log << QStringLiteral("Normal vector voting: neighbourhood k = %1 mean edge lengths -> absolute radius %2; "
                             "crease angle %3 deg (epsilon %4), corner angle %5 deg (eta %6)%7")
@@ -103,6 +136,29 @@ Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, vcg::CallBackPos* 
                  .arg(out.summary.signAwareUsed ? QStringLiteral(", sign-aware rule") : QStringLiteral(", paper's rule"));
   for (const auto& w : out.summary.warnings) out.log << QStringLiteral("Normal vector voting: warning: ") + QString::fromStdString(w);
   return out;
+}
+
+std::map<std::string, QVariant> SummaryValues(const nvv::Summary& s) {
+  // Plain int / double / bool values: every MeshLab front end converts them.
+  std::map<std::string, QVariant> v;
+  v["surface_vertices"] = int(s.perClass[int(nvv::VertexClass::Surface)]);
+  v["crease_vertices"] = int(s.perClass[int(nvv::VertexClass::Crease)]);
+  v["corner_vertices"] = int(s.perClass[int(nvv::VertexClass::Corner)]);
+  v["unclassified_vertices"] = int(s.perClass[int(nvv::VertexClass::Invalid)]);
+  v["capped_vertices"] = int(s.capped);
+  v["k1_min"] = s.k1Min;
+  v["k1_max"] = s.k1Max;
+  v["k2_min"] = s.k2Min;
+  v["k2_max"] = s.k2Max;
+  v["absolute_radius"] = s.radius;
+  v["mean_edge_length"] = s.meanEdge;
+  v["epsilon"] = s.epsilon;
+  v["eta"] = s.eta;
+  v["sign_aware_rule"] = s.signAwareUsed;
+  v["seconds"] = s.secondsTotal;
+  v["seconds_pass1"] = s.secondsPass1;
+  v["seconds_pass2"] = s.secondsPass2;
+  return v;
 }
 
 }  // namespace nvv_meshlab

@@ -1,14 +1,27 @@
 // What both MeshLab plugin APIs (2020.09's MeshFilterInterface and 2022.02+'s FilterPlugin)
 // share: the filter's names and help, its parameters built from nvv::FilterParameterTable(),
-// their validation, and the run that writes results onto the MeshModel. The API layers only
-// translate calls and errors.
+// their validation, the run that writes results onto the MeshModel and its summary values. The
+// API layers only translate calls and errors.
+//
+// The same source compiles against both MeshLab trees; the 2022.02+/2025.07 build defines
+// NVV_MESHLAB_API_2025 (and MESHLAB_VERSION, which its headers require).
 #ifndef NVV_MESHLAB_FILTER_COMMON_H
 #define NVV_MESHLAB_FILTER_COMMON_H
 
+#include <map>
+#include <string>
+
 #include <QString>
 #include <QStringList>
+#include <QVariant>
 
+#ifdef NVV_MESHLAB_API_2025
+// MeshLab 2022.02 and later: the document and the parameters have headers of their own.
+#include <common/ml_document/mesh_model.h>
+#include <common/parameters/rich_parameter_list.h>
+#else
 #include <common/interfaces.h>
+#endif
 
 #include "core/filter_options.h"
 #include "core/vertex_result.h"
@@ -25,8 +38,9 @@ QString FilterInfo();
 // Adds every parameter of the table, with its default, to the dialog.
 void AddParameters(RichParameterList& par);
 
-// Reads the dialog's values into options; returns the reason when one is refused.
-QString ReadOptions(const RichParameterList& par, nvv::FilterOptions& options);
+// Reads the dialog's values into options (and the optional full-result PLY path); returns the
+// reason when one is refused.
+QString ReadOptions(const RichParameterList& par, nvv::FilterOptions& options, QString& resultPly);
 
 // The MeshModel components the run writes (for postCondition and updateDataMask).
 int OutputMask();
@@ -38,8 +52,16 @@ struct Outcome {
   nvv::Summary summary;
 };
 
-// Runs the filter on mm. On failure (refused mesh, cancellation) the mesh is untouched.
-Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, vcg::CallBackPos* cb);
+// Runs the filter on mm and, when resultPly is not empty, writes the full-result PLY there.
+// On failure (refused mesh, unwritable file, cancellation) the mesh is untouched.
+// Progress goes to cb from the calling thread only (the GUI pumps its event loop in it).
+Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& resultPly, vcg::CallBackPos* cb);
+
+// The run's summary as named values (PyMeshLab hands them to the script as a dict):
+// surface_vertices, crease_vertices, corner_vertices, unclassified_vertices, capped_vertices,
+// k1_min, k1_max, k2_min, k2_max, absolute_radius, mean_edge_length, epsilon, eta,
+// sign_aware_rule, seconds, seconds_pass1, seconds_pass2.
+std::map<std::string, QVariant> SummaryValues(const nvv::Summary& summary);
 
 }  // namespace nvv_meshlab
 

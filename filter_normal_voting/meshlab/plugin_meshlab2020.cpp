@@ -35,9 +35,10 @@ bool NormalVectorVotingPlugin::applyFilter(QAction*, MeshDocument& md, const Ric
   };
   if (md.mm() == nullptr) return fail(QStringLiteral("Normal Vector Voting: no mesh is loaded."));
   nvv::FilterOptions options;
-  const QString bad = nvv_meshlab::ReadOptions(par, options);
+  QString resultPly;
+  const QString bad = nvv_meshlab::ReadOptions(par, options, resultPly);
   if (!bad.isEmpty()) return fail(QStringLiteral("Normal Vector Voting: ") + bad + QStringLiteral(" The mesh was not changed."));
-  const nvv_meshlab::Outcome out = nvv_meshlab::Run(*md.mm(), options, cb);
+  const nvv_meshlab::Outcome out = nvv_meshlab::Run(*md.mm(), options, resultPly, cb);
   if (!out.ok) return fail(out.error);
   for (const QString& line : out.log) Log(qUtf8Printable(line));
   return true;

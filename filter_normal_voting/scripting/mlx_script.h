@@ -52,6 +52,11 @@ inline std::string MlxFilterElement(const std::map<std::string, std::string>& va
     }
     x << " description=\"" << XmlEscape(p.label) << "\"/>\n";
   }
+  const SaveFileSpec& save = ResultPlyParameter();
+  const auto path = values.find(save.name);
+  x << "  <Param name=\"" << save.name << "\" type=\"RichSaveFile\" value=\""
+    << XmlEscape(path == values.end() ? std::string() : path->second) << "\" ext=\".ply\" description=\""
+    << XmlEscape(save.label) << "\"/>\n";
   x << " </filter>\n";
   return x.str();
 }
