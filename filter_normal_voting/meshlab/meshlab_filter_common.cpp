@@ -44,8 +44,13 @@ void AddParameters(RichParameterList& par) {
     }
   }
   const nvv::SaveFileSpec& save = nvv::ResultPlyParameter();
+#ifdef NVV_MESHLAB_API_2025
+  par.addParam(RichFileSave(QString::fromUtf8(save.name), QString(), QStringLiteral(".ply"),  // renamed in 2022.02
+                            QString::fromUtf8(save.label), QString::fromUtf8(save.help)));
+#else
   par.addParam(RichSaveFile(QString::fromUtf8(save.name), QString(), QStringLiteral(".ply"),
                             QString::fromUtf8(save.label), QString::fromUtf8(save.help)));
+#endif
 }
 
 QString ReadOptions(const RichParameterList& par, nvv::FilterOptions& options, QString& resultPly) {
