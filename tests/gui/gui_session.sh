@@ -1,0 +1,65 @@
+# Shared by the GUI smoke tests of MeshLab 2020.09 (host) and 2025.07 (sid chroot); sourced, not run.
+# Starts a private Xvfb display, starts MeshLab on it, and offers screenshot / OCR helpers that find
+# what a user would see without fixed coordinates. The caller sets `out` (the screenshot folder)
+# and calls gui_start_display, then gui_start_meshlab CMD ARGS...
+# Needs Xvfb, xdotool, ImageMagick's import and convert, and tesseract.
+for cmd in Xvfb xdotool import tesseract /usr/bin/convert; do
+  command -v "$cmd" >/dev/null || { echo "gui smoke: $cmd is missing"; exit 1; }
+done
+gui_xpid="" gui_mlpid=""
+gui_cleanup() { [ -n "$gui_mlpid" ] && kill "$gui_mlpid" 2>/dev/null; [ -n "$gui_xpid" ] && kill "$gui_xpid" 2>/dev/null; true; }
+trap gui_cleanup EXIT
+
+gui_start_display() {
+  local d disp=""
+  for d in $(seq 91 160); do
+    if [ ! -e "/tmp/.X$d-lock" ] && [ ! -e "/tmp/.X11-unix/X$d" ]; then disp=$d; break; fi
+  done
+  [ -n "$disp" ] || { echo "gui smoke: no free X display"; exit 1; }
+  Xvfb ":$disp" -screen 0 1280x1024x24 -nolisten tcp >/dev/null 2>&1 &
+  gui_xpid=$!
+  export DISPLAY=":$disp"
+  for _ in $(seq 50); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
+}
+
+# gui_start_meshlab CMD ARGS...: starts it (log in $out/meshlab_gui.log) and puts its window at the
+# top left, 1280 x 1000 (there is no window manager).
+gui_start_meshlab() {
+  "$@" > "$out/meshlab_gui.log" 2>&1 &
+  gui_mlpid=$!
+  local wid
+  wid=$(timeout 60 xdotool search --sync --name "MeshLab" | awk 'NR == 1')  # awk reads all: no SIGPIPE
+  [ -n "$wid" ] || { echo "gui smoke: no MeshLab window; its log:"; cat "$out/meshlab_gui.log"; exit 1; }
+  sleep 5
+  xdotool windowmove "$wid" 0 0 windowsize "$wid" 1280 1000
+  sleep 2
+}
+
+# shot NAME: a screenshot $out/NAME.png and the text OCR reads on it, $out/NAME.txt.
+shot() {
+  import -window root "$out/$1.png"
+  /usr/bin/convert "$out/$1.png" -resize 200% "$out/.shot2x.png"  # OCR misses small UI text at 1x
+  tesseract "$out/.shot2x.png" - 2>/dev/null > "$out/$1.txt" || true
+}
+
+# expect NAME REGEX: the text (extended regex, any case) must be on screenshot NAME.
+expect() {
+  if ! tr '\n' ' ' < "$out/$1.txt" | grep -Eiq "$2"; then
+    echo "gui smoke: '$2' not found on $out/$1.png; OCR read:"; cat "$out/$1.txt"; exit 1
+  fi
+  echo "gui smoke: '$2' is on $1.png"
+}
+
+# click_word WORD: clicks the centre of the first word WORD that OCR finds on the screen.
+click_word() {
+  import -window root "$out/.click.png"
+  /usr/bin/convert "$out/.click.png" -resize 200% "$out/.click2x.png"
+  local pos
+  # psm 11 (sparse text) also finds lone button labels.
+  pos=$(tesseract "$out/.click2x.png" - --psm 11 tsv 2>/dev/null |
+        awk -F'\t' -v w="$1" '$12 == w && !found { print int(($7 + $9 / 2) / 2), int(($8 + $10 / 2) / 2); found = 1 }')
+  [ -n "$pos" ] || { echo "gui smoke: '$1' not found on screen"; cp "$out/.click.png" "$out/not_found_$1.png"; exit 1; }
+  # shellcheck disable=SC2086
+  xdotool mousemove $pos sleep 0.3 mousemove_relative 2 0 click 1
+  sleep 1.5
+}
