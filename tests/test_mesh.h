@@ -14,7 +14,11 @@ class TVertex : public vcg::Vertex<TUsedTypes, vcg::vertex::Coord3d, vcg::vertex
                                    vcg::vertex::Color4b, vcg::vertex::Mark, vcg::vertex::BitFlags> {};
 class TFace : public vcg::Face<TUsedTypes, vcg::face::VertexRef, vcg::face::Normal3d, vcg::face::VFAdj,
                                vcg::face::FFAdj, vcg::face::Mark, vcg::face::BitFlags> {};
-class TMesh : public vcg::tri::TriMesh<std::vector<TVertex>, std::vector<TFace>> {};
+class TMesh : public vcg::tri::TriMesh<std::vector<TVertex>, std::vector<TFace>> {
+ public:
+  // vcglib's TriMesh destructor leaves the per-vertex attributes allocated (LeakSanitizer).
+  ~TMesh() { ClearAttributes(); }
+};
 }  // namespace nvv_test
 
 #endif

@@ -14,7 +14,11 @@ struct CliUsedTypes : public vcg::UsedTypes<vcg::Use<CliVertex>::AsVertexType, v
 class CliVertex : public vcg::Vertex<CliUsedTypes, vcg::vertex::Coord3f, vcg::vertex::BitFlags, vcg::vertex::Normal3f,
                                      vcg::vertex::Qualityf, vcg::vertex::Color4b, vcg::vertex::CurvatureDirf> {};
 class CliFace : public vcg::Face<CliUsedTypes, vcg::face::VertexRef, vcg::face::BitFlags, vcg::face::Normal3f> {};
-class CliMesh : public vcg::tri::TriMesh<std::vector<CliVertex>, std::vector<CliFace>> {};
+class CliMesh : public vcg::tri::TriMesh<std::vector<CliVertex>, std::vector<CliFace>> {
+ public:
+  // vcglib's TriMesh destructor leaves the per-vertex attributes (nvv_class, ...) allocated.
+  ~CliMesh() { ClearAttributes(); }
+};
 
 }  // namespace nvv_cli
 

@@ -44,7 +44,10 @@ class BareFace;
 struct BareTypes : public vcg::UsedTypes<vcg::Use<BareVertex>::AsVertexType, vcg::Use<BareFace>::AsFaceType> {};
 class BareVertex : public vcg::Vertex<BareTypes, vcg::vertex::Coord3f, vcg::vertex::BitFlags> {};
 class BareFace : public vcg::Face<BareTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
-class BareMesh : public vcg::tri::TriMesh<std::vector<BareVertex>, std::vector<BareFace>> {};
+class BareMesh : public vcg::tri::TriMesh<std::vector<BareVertex>, std::vector<BareFace>> {
+ public:
+  ~BareMesh() { ClearAttributes(); }  // vcglib's destructor leaves attributes allocated
+};
 
 }  // namespace
 
