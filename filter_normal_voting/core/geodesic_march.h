@@ -8,28 +8,33 @@
 // triangles, or no such S) d_C = min(d_A + |AC|, d_B + |BC|), the edge path.
 //
 // Scratch state is per instance (one per thread), allocated once for the whole mesh and
-// reset in O(visited) after each march.
+// reset in O(visited) after each march: a march of a few hundred vertices never pays for the
+// mesh's size, and the per-vertex loop allocates nothing once the vectors have grown.
+//
+// Cost per march (what the profile of the two passes showed, and what was done about it):
+//  - the edge lengths of the unfolding are read from SurfaceGraph::faceEdge, computed once,
+//    instead of three square roots and three position loads per update;
+//  - the front is an indexed binary heap with decrease-key, one entry per tentative vertex,
+//    instead of a lazy-deletion priority queue whose stale duplicates (a vertex is improved
+//    from several faces) doubled its size and the cost of every push and pop.
+// Neither changes a single bit of the distances or the order of acceptance: the heap pops the
+// unique minimum of (distance, vertex) either way, and the lengths are the same expressions.
 #ifndef NVV_CORE_GEODESIC_MARCH_H
 #define NVV_CORE_GEODESIC_MARCH_H
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <vector>
 
 #include "surface_graph.h"
 
 namespace nvv {
 
-// Planar unfolding update of d_C from accepted A, B (see the header comment).
-inline double UnfoldedDistance(const Eigen::Vector3d& A, const Eigen::Vector3d& B,
-                               const Eigen::Vector3d& C, double dA, double dB) {
-  const double c = (B - A).norm();
-  const double b = (C - A).norm();  // |AC|
-  const double a = (C - B).norm();  // |BC|
+// Planar unfolding update of d_C from accepted A, B, given the lengths c = |AB|, b = |AC|,
+// a = |BC| of the triangle (see the header comment).
+inline double UnfoldedDistanceFromLengths(double c, double b, double a, double dA, double dB) {
   const double edgePath = std::min(dA + b, dB + a);
   if (!(c > 0)) return edgePath;
   const double cx = (b * b - a * a + c * c) / (2 * c);
@@ -46,11 +51,17 @@ inline double UnfoldedDistance(const Eigen::Vector3d& A, const Eigen::Vector3d& 
   return std::min(d, edgePath);
 }
 
+// The same from the three positions.
+inline double UnfoldedDistance(const Eigen::Vector3d& A, const Eigen::Vector3d& B,
+                               const Eigen::Vector3d& C, double dA, double dB) {
+  return UnfoldedDistanceFromLengths((B - A).norm(), (C - A).norm(), (C - B).norm(), dA, dB);
+}
+
 class GeodesicMarch {
  public:
   explicit GeodesicMarch(const SurfaceGraph& g)
       : g_(g), dist_(g.VertexCount(), std::numeric_limits<double>::infinity()),
-        state_(g.VertexCount(), kFar) {}
+        state_(g.VertexCount(), kFar), heapIndex_(g.VertexCount(), -1) {}
 
   // Marches from `source` until the next vertex would be farther than `radius` or
   // `maxVertices` vertices are accepted. `blocked(v)` true: v may be accepted (it is reached)
@@ -62,14 +73,13 @@ class GeodesicMarch {
     touched_.push_back(source);
     dist_[source] = 0;
     state_[source] = kTentative;
-    heap_.push({0.0, source});
+    Push({0.0, source});
     bool complete = true;
     while (!heap_.empty()) {
-      const Entry e = heap_.top();
-      if (state_[e.v] == kAccepted || e.d > dist_[e.v]) { heap_.pop(); continue; }
+      const Entry e = heap_.front();  // the tentative vertex of least (distance, index)
       if (e.d > radius) break;
       if (int(reached_.size()) >= maxVertices) { complete = false; break; }
-      heap_.pop();
+      PopFront();
       state_[e.v] = kAccepted;
       reached_.push_back(e.v);
       if (e.v != source && blocked(e.v)) { state_[e.v] = kAcceptedBlocked; continue; }
@@ -92,17 +102,57 @@ class GeodesicMarch {
   struct Entry {
     double d;
     int v;
-    bool operator<(const Entry& o) const { return d > o.d || (d == o.d && v > o.v); }  // min-heap
   };
+  // Strict total order of the front: by distance, ties by vertex index, so the order of
+  // acceptance does not depend on the heap's layout (nor on the thread count).
+  static bool Before(const Entry& a, const Entry& b) { return a.d < b.d || (a.d == b.d && a.v < b.v); }
 
   void Reset() {
     for (int v : touched_) {
       dist_[v] = std::numeric_limits<double>::infinity();
       state_[v] = kFar;
     }
+    for (const Entry& e : heap_) heapIndex_[e.v] = -1;
     touched_.clear();
     reached_.clear();
-    while (!heap_.empty()) heap_.pop();
+    heap_.clear();
+  }
+
+  // Indexed binary heap: heapIndex_[v] is v's slot in heap_ (-1 when not there). Sifting moves
+  // a hole instead of swapping, and keeps heapIndex_ in step.
+  void SiftUp(int i, Entry e) {
+    while (i > 0) {
+      const int parent = (i - 1) / 2;
+      if (!Before(e, heap_[parent])) break;
+      heap_[i] = heap_[parent];
+      heapIndex_[heap_[i].v] = i;
+      i = parent;
+    }
+    heap_[i] = e;
+    heapIndex_[e.v] = i;
+  }
+  void Push(Entry e) {
+    heap_.push_back(e);
+    SiftUp(int(heap_.size()) - 1, e);
+  }
+  void PopFront() {
+    heapIndex_[heap_.front().v] = -1;
+    const Entry last = heap_.back();
+    heap_.pop_back();
+    const int n = int(heap_.size());
+    if (n == 0) return;
+    int i = 0;
+    for (;;) {
+      int child = 2 * i + 1;
+      if (child >= n) break;
+      if (child + 1 < n && Before(heap_[child + 1], heap_[child])) ++child;
+      if (!Before(heap_[child], last)) break;
+      heap_[i] = heap_[child];
+      heapIndex_[heap_[i].v] = i;
+      i = child;
+    }
+    heap_[i] = last;
+    heapIndex_[last.v] = i;
   }
 
   void Relax(int v, double d) {
@@ -110,7 +160,9 @@ class GeodesicMarch {
     if (state_[v] == kFar) { touched_.push_back(v); state_[v] = kTentative; }
     if (d < dist_[v]) {
       dist_[v] = d;
-      heap_.push({d, v});
+      const int i = heapIndex_[v];
+      if (i < 0) Push({d, v});
+      else SiftUp(i, {d, v});  // decrease-key: a smaller key only moves up
     }
   }
 
@@ -119,29 +171,34 @@ class GeodesicMarch {
       const int fi = g_.vfList[i];
       const auto& f = g_.face[fi];
       const int j = f[0] == x ? 0 : (f[1] == x ? 1 : 2);
-      const int y = f[(j + 1) % 3], z = f[(j + 2) % 3];
+      const int j1 = j == 2 ? 0 : j + 1, j2 = j == 0 ? 2 : j - 1;
+      const int y = f[j1], z = f[j2];
+      // faceEdge[fi][j] = |xy|, [j1] = |yz|, [j2] = |zx|.
+      const auto& e = g_.faceEdge[fi];
       const bool useTriangle = g_.faceArea[fi] > 0;
-      UpdateThrough(x, y, z, useTriangle);
-      UpdateThrough(x, z, y, useTriangle);
+      UpdateThrough(x, y, z, e[j], e[j2], e[j1], useTriangle);
+      UpdateThrough(x, z, y, e[j2], e[j], e[j1], useTriangle);
     }
   }
 
-  // Updates c from the accepted x, through the triangle when its third vertex o is accepted too.
-  void UpdateThrough(int x, int o, int c, bool useTriangle) {
+  // Updates c from the accepted x, through the triangle when its third vertex o is accepted
+  // too; xo, xc, oc are the triangle's edge lengths.
+  void UpdateThrough(int x, int o, int c, double xo, double xc, double oc, bool useTriangle) {
     if (IsReached(c)) return;
     double d;
     if (useTriangle && state_[o] == kAccepted)
-      d = UnfoldedDistance(g_.pos[x], g_.pos[o], g_.pos[c], dist_[x], dist_[o]);
+      d = UnfoldedDistanceFromLengths(xo, xc, oc, dist_[x], dist_[o]);
     else
-      d = dist_[x] + (g_.pos[c] - g_.pos[x]).norm();
+      d = dist_[x] + xc;
     Relax(c, d);
   }
 
   const SurfaceGraph& g_;
   std::vector<double> dist_;
   std::vector<std::uint8_t> state_;
+  std::vector<int> heapIndex_;
   std::vector<int> touched_, reached_;
-  std::priority_queue<Entry> heap_;
+  std::vector<Entry> heap_;
 };
 
 }  // namespace nvv

@@ -21,7 +21,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace nvv {
@@ -32,6 +31,12 @@ struct SurfaceGraph {
   std::vector<std::array<int, 3>> face;       // usable faces only
   std::vector<Eigen::Vector3d> faceNormal;    // unit; zero for degenerate faces
   std::vector<double> faceArea;               // 0 for degenerate faces
+  // faceEdge[i][j] = |face[i][j+1] - face[i][j]| (indices mod 3). The marcher needs these lengths
+  // on every update through a face; computing them once here takes three square roots and three
+  // scattered position loads out of its inner loop (the unfolding needs lengths only). Each is
+  // the same Eigen expression the marcher would evaluate (|b - a| and |a - b| round alike), so
+  // distances are bit-identical to computing them on the fly.
+  std::vector<std::array<double, 3>> faceEdge;
   std::vector<int> vfStart;                   // CSR: faces of v are vfList[vfStart[v] .. vfStart[v+1])
   std::vector<int> vfList;
   double meanEdge = 0;                        // l_ave over the edges of usable faces
@@ -70,10 +75,14 @@ struct SurfaceGraph {
     const int nf = FaceCount();
     faceNormal.assign(nf, Eigen::Vector3d::Zero());
     faceArea.assign(nf, 0.0);
+    faceEdge.resize(nf);
     double edgeSum = 0;
     for (int i = 0; i < nf; ++i) {
       const auto& f = face[i];
-      for (int j = 0; j < 3; ++j) edgeSum += (pos[f[(j + 1) % 3]] - pos[f[j]]).norm();
+      for (int j = 0; j < 3; ++j) {
+        faceEdge[i][j] = (pos[f[(j + 1) % 3]] - pos[f[j]]).norm();
+        edgeSum += faceEdge[i][j];
+      }
     }
     meanEdge = nf > 0 ? edgeSum / (3.0 * nf) : 0.0;
     // A face is degenerate when its area is negligible against l_ave^2 (scale-free test).
@@ -110,17 +119,23 @@ struct SurfaceGraph {
  private:
   // A two-face edge used twice in the same direction means the orientation flips there.
   // Edges with three or more faces (non-manifold) say nothing about orientation: skipped.
+  // Done on the CSR adjacency (the faces around a) instead of a hash map of directed edges:
+  // the same answer with no allocation, several times faster on million-face meshes.
   bool CheckOrientation() const {
-    std::unordered_map<std::uint64_t, int> directed;
-    directed.reserve(face.size() * 3);
-    auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+    // Number of faces around a that use the directed edge a -> b.
+    auto uses = [this](int a, int b) {
+      int count = 0;
+      for (int i = vfStart[a]; i < vfStart[a + 1]; ++i) {
+        const auto& f = face[vfList[i]];
+        for (int j = 0; j < 3; ++j) count += f[j] == a && f[(j + 1) % 3] == b;
+      }
+      return count;
+    };
     for (const auto& f : face)
-      for (int j = 0; j < 3; ++j) ++directed[key(f[j], f[(j + 1) % 3])];
-    for (const auto& e : directed) {
-      if (e.second < 2) continue;
-      const auto rev = directed.find(key(int(e.first & 0xffffffffu), int(e.first >> 32)));
-      if (rev == directed.end()) return false;
-    }
+      for (int j = 0; j < 3; ++j) {
+        const int a = f[j], b = f[(j + 1) % 3];
+        if (uses(a, b) >= 2 && uses(b, a) == 0) return false;
+      }
     return true;
   }
 };
