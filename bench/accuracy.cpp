@@ -1,0 +1,25 @@
+// nvv_bench_accuracy: this project's estimators against MeshLab's (vcglib) and CGAL's, in
+// process, on the same meshes. Usage: nvv_bench_accuracy SECTION OUTDIR, SECTION one of
+//   grids     the paper's 32x32 plane / sphere / cylinder at 0..20 % noise (smooth.cpp)
+//   variants  irregular and finer grids, a torus (smooth.cpp)
+//   f1        crease precision / recall / F1 on roofs, a cube, a capped cylinder (creases.cpp)
+//   near      accuracy of surface vertices near those creases (creases.cpp)
+//   real      fandisk and the ABC model with ground-truth features (real_meshes.cpp)
+// Prints markdown tables; writes CSV files for the plots into OUTDIR.
+#include <cstdio>
+#include <string>
+
+#include "sections.h"
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: %s grids|variants|f1|near|real OUTDIR\n", argv[0]);
+    return 2;
+  }
+  const std::string s = argv[1], out = argv[2];
+  if (s == "grids" || s == "variants") return nvv_bench::RunSmooth(out, s);
+  if (s == "f1" || s == "near") return nvv_bench::RunCreases(out, s);
+  if (s == "real") return nvv_bench::RunReal(out);
+  std::fprintf(stderr, "unknown section %s\n", s.c_str());
+  return 2;
+}

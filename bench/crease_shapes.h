@@ -1,0 +1,127 @@
+// Piecewise-smooth shapes with known creases for the accuracy benchmark: roofs (two planes,
+// normals alpha apart, sheets sampled at 1 mm), a cube and a capped cylinder (90 deg rims).
+// Per vertex: whether it lies on a crease, the true normal, curvatures and direction of the
+// smaller curvature where defined, and the distance to the nearest crease along the surface.
+#ifndef NVV_BENCH_CREASE_SHAPES_H
+#define NVV_BENCH_CREASE_SHAPES_H
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "peers_vcg.h"
+#include "sample_meshes/synthetic_shapes.h"
+
+namespace nvv_bench {
+
+struct VertexTruth {
+  bool feature = false;  // on a crease line (or a corner)
+  bool use = true;       // far enough from the mesh boundary to be scored
+  Eigen::Vector3d n = Eigen::Vector3d::Zero(), t2 = Eigen::Vector3d::Zero();
+  double k1 = 0, k2 = 0;
+  bool hasDir = false;
+  double dist = 0;       // to the nearest crease, along the surface
+};
+
+struct CreaseShape {
+  std::string name;
+  double alphaDeg;  // normal-angle of its creases
+  int kind;         // 0 roof, 1 cube, 2 capped cylinder
+};
+
+const double kCapR = 8, kCapH = 16, kCubeH = 8;
+
+inline void BuildCreaseShape(const CreaseShape& s, TMesh& m) {
+  if (s.kind == 0) {
+    // Sheets 16 mm wide at 1 mm spacing whatever the angle: half-width in x is 16 cos(alpha/2).
+    nvv_shapes::Roof(m, s.alphaDeg, 33, 16 * std::cos(s.alphaDeg * M_PI / 360), 32);
+  } else if (s.kind == 1) {
+    nvv_shapes::Cube(m, kCubeH, 17);
+  } else {
+    // Rows 0..8 bottom cap (centre to rim), 8..24 side, 24..32 top cap (rim to centre).
+    nvv_shapes::ParametricGrid(m, 50, 33, [](double u, double t) {
+      const int j = int(std::lround(t * 32));
+      const double th = 2 * M_PI * u;
+      double rho, z;
+      if (j <= 8) { rho = kCapR * j / 8; z = -kCapH / 2; }
+      else if (j <= 24) { rho = kCapR; z = -kCapH / 2 + kCapH * (j - 8) / 16; }
+      else { rho = kCapR * (32 - j) / 8; z = kCapH / 2; }
+      return vcg::Point3d(rho * std::cos(th), rho * std::sin(th), z);
+    }, 0, 1, true, false);
+    vcg::tri::Clean<TMesh>::RemoveDuplicateVertex(m);
+    vcg::tri::Clean<TMesh>::RemoveDegenerateFace(m);
+    vcg::tri::Clean<TMesh>::RemoveUnreferencedVertex(m);
+    vcg::tri::Allocator<TMesh>::CompactEveryVector(m);
+  }
+}
+
+inline VertexTruth CreaseTruthAt(const CreaseShape& s, const vcg::Point3d& q) {
+  const Eigen::Vector3d p(q[0], q[1], q[2]);
+  VertexTruth t;
+  const double eps = 1e-6;
+  if (s.kind == 0) {
+    const double a = s.alphaDeg * M_PI / 360;
+    t.feature = std::abs(p.x()) < eps;
+    t.n = Eigen::Vector3d((p.x() > 0 ? 1 : -1) * std::sin(a), 0, std::cos(a));
+    t.dist = std::abs(p.x()) / std::cos(a);
+    t.use = std::abs(p.y()) <= 12 + eps && t.dist <= 12 + eps;
+  } else if (s.kind == 1) {
+    int onFace = 0, axis = 0;
+    for (int i = 0; i < 3; ++i)
+      if (std::abs(std::abs(p[i]) - kCubeH) < eps) { ++onFace; axis = i; }
+    t.feature = onFace >= 2;
+    t.n = Eigen::Vector3d::Zero();
+    t.n[axis] = p[axis] > 0 ? 1 : -1;
+    t.dist = std::min(kCubeH - std::abs(p[(axis + 1) % 3]), kCubeH - std::abs(p[(axis + 2) % 3]));
+  } else {
+    const double rho = std::hypot(p.x(), p.y());
+    if (std::abs(p.z()) < kCapH / 2 - eps) {
+      t.n = Eigen::Vector3d(p.x(), p.y(), 0) / rho;
+      t.k1 = 1 / kCapR;
+      t.t2 = Eigen::Vector3d::UnitZ();
+      t.hasDir = true;
+      t.dist = kCapH / 2 - std::abs(p.z());
+    } else if (rho < kCapR - eps) {
+      t.n = Eigen::Vector3d(0, 0, p.z() > 0 ? 1 : -1);
+      t.dist = kCapR - rho;
+    } else {
+      t.feature = true;
+    }
+  }
+  return t;
+}
+
+// Gaussian noise of standard deviation sigma along the clean mesh's angle-weighted normals
+// (the true normal on the faces, the bisector on the creases).
+inline void NoiseAlongNormals(TMesh& m, double sigma, unsigned seed) {
+  if (!(sigma > 0)) return;
+  const std::vector<Eigen::Vector3d> n = AngleWeightedNormals(m);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0, sigma);
+  for (std::size_t i = 0; i < m.vert.size(); ++i) {
+    const Eigen::Vector3d d = n[i] * g(rng);
+    m.vert[i].P() += vcg::Point3d(d.x(), d.y(), d.z());
+  }
+}
+
+struct F1 {
+  double precision = 0, recall = 0, f1 = 0;
+};
+inline F1 ScoreFeatures(const std::vector<char>& found, const std::vector<char>& truth, const std::vector<char>& use) {
+  double tp = 0, fp = 0, fn = 0;
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    if (!use[i]) continue;
+    if (found[i] && truth[i]) ++tp;
+    else if (found[i]) ++fp;
+    else if (truth[i]) ++fn;
+  }
+  F1 r;
+  r.precision = tp + fp > 0 ? tp / (tp + fp) : 1;
+  r.recall = tp + fn > 0 ? tp / (tp + fn) : 1;
+  r.f1 = r.precision + r.recall > 0 ? 2 * r.precision * r.recall / (r.precision + r.recall) : 0;
+  return r;
+}
+
+}  // namespace nvv_bench
+
+#endif

@@ -1,0 +1,13 @@
+// The sections of the accuracy benchmark; each prints markdown and writes CSV into outDir.
+#ifndef NVV_BENCH_SECTIONS_H
+#define NVV_BENCH_SECTIONS_H
+
+#include <string>
+
+namespace nvv_bench {
+int RunSmooth(const std::string& outDir, const std::string& which);  // "grids" or "variants"
+int RunCreases(const std::string& outDir, const std::string& which); // "f1" or "near"
+int RunReal(const std::string& outDir);
+}  // namespace nvv_bench
+
+#endif
