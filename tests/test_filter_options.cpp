@@ -44,6 +44,11 @@ TEST(FilterOptions, NamesAreUniqueAndEveryParameterIsSettable) {
   }
   nvv::FilterOptions o;
   EXPECT_NE("", nvv::SetOption(o, "no_such_parameter", 1));
+  // Found by the fuzzer: a boolean given a huge number reached an undefined double -> int
+  // conversion. Booleans take 0 or 1 only.
+  EXPECT_NE("", nvv::SetOption(o, "stop_at_creases", -1.55301e+34));
+  EXPECT_NE("", nvv::SetOption(o, "update_normals", 2));
+  EXPECT_TRUE(o.core.stopAtCreases && o.updateNormals);
 }
 
 TEST(ApplyResults, WritesOrderedCurvatureClassesAndSelection) {

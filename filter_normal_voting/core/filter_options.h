@@ -159,7 +159,11 @@ inline std::string SetOption(FilterOptions& o, const std::string& name, double v
                   value, spec->minValue, spec->maxValue);
     return buf;
   }
-  const int iv = int(value);
+  if (spec->type == ParamType::Bool && value != 0 && value != 1)
+    return std::string("Parameter '") + spec->name + "' must be 0 (false) or 1 (true).";
+  // Only Enum and Int values, checked against their range above, are converted: converting an
+  // out-of-range double to int is undefined.
+  const int iv = spec->type == ParamType::Enum || spec->type == ParamType::Int ? int(value) : 0;
   if (name == "neighbourhood_k") o.core.k = value;
   else if (name == "absolute_radius") o.core.absoluteRadius = value;
   else if (name == "crease_angle") o.core.creaseAngleDeg = value;
