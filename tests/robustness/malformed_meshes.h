@@ -69,7 +69,7 @@ inline std::vector<Case> MalformedCorpus() {
                            {0, 0, 0, 0, 0, 0, 0, 0, 0},    {0, 0, 0, 1e-20, 0, 0, 0, 1e-20, 0},
                            {0, 0, 0, 1e20, 0, 0, 0, 1e20, 0}, {0, 0, 0, 1, 0, 0, 0.5, 1e-9, 0}};
   for (int t = 0; t < 6; ++t)
-    add("one_triangle_" + std::to_string(t), [t, &tri](TMesh& m) {
+    add("one_triangle_" + std::to_string(t), [t, tri](TMesh& m) {  // tri by copy: the case runs after this scope ends
       auto vi = Alloc::AddVertices(m, 3);
       for (int j = 0; j < 3; ++j) (vi + j)->P() = vcg::Point3d(tri[t][3 * j], tri[t][3 * j + 1], tri[t][3 * j + 2]);
       Alloc::AddFace(m, &m.vert[0], &m.vert[1], &m.vert[2]);
