@@ -47,7 +47,8 @@ inline double UnfoldedDistanceFromLengths(double c, double b, double a, double d
   const double t = -sy / (cy - sy);
   const double x = sx + t * (cx - sx);
   if (x < 0 || x > c) return edgePath;
-  const double d = std::hypot(cx - sx, cy - sy);
+  const double dx = cx - sx, dy = cy - sy;
+  const double d = std::sqrt(dx * dx + dy * dy);
   return std::min(d, edgePath);
 }
 
@@ -70,6 +71,7 @@ class GeodesicMarch {
   template <class Blocked>
   bool Run(int source, double radius, int maxVertices, Blocked blocked) {
     Reset();
+    radius_ = radius;
     touched_.push_back(source);
     dist_[source] = 0;
     state_[source] = kTentative;
@@ -161,7 +163,9 @@ class GeodesicMarch {
     if (d < dist_[v]) {
       dist_[v] = d;
       const int i = heapIndex_[v];
-      if (i < 0) Push({d, v});
+      if (i < 0) {
+        if (d <= radius_) Push({d, v});  // beyond g_m it could never be popped (header comment)
+      }
       else SiftUp(i, {d, v});  // decrease-key: a smaller key only moves up
     }
   }
@@ -194,6 +198,7 @@ class GeodesicMarch {
   }
 
   const SurfaceGraph& g_;
+  double radius_ = 0;
   std::vector<double> dist_;
   std::vector<std::uint8_t> state_;
   std::vector<int> heapIndex_;

@@ -67,9 +67,12 @@ inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vec
     ++used;
   }
   if (used < 3) return pc;
-  Eigen::SelfAdjointEigenSolver<Mat6> check(A, Eigen::EigenvaluesOnly);
-  if (!(check.eigenvalues()(0) > 1e-10 * check.eigenvalues()(5))) return pc;
-  const Vec6 x = A.ldlt().solve(rhs);
+  // Too few or collinear samples leave A (nearly) singular: refuse rather than fit noise. The
+  // LDLT's reciprocal condition estimate does what a 6x6 eigen-decomposition did, for the cost
+  // of the factorisation the solve needs anyway.
+  const Eigen::LDLT<Mat6> ldlt(A);
+  if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-10)) return pc;
+  const Vec6 x = ldlt.solve(rhs);
   const double d = x(3), e = x(4);
   Eigen::Matrix2d I, II;
   I << 1 + d * d, d * e, d * e, 1 + e * e;
