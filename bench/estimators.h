@@ -58,6 +58,7 @@ struct Estimator {
   double k;
   EstimatorFn fn;
   double sign = 1;
+  nvv::Params params;  // kinds 0 and 1: what fn runs
 };
 
 inline void FromNvv(const std::vector<nvv::VertexResult>& res, std::vector<Estimate>& out) {
@@ -72,19 +73,26 @@ inline void FromNvv(const std::vector<nvv::VertexResult>& res, std::vector<Estim
   }
 }
 
-inline Estimator Nvv(double k, nvv::CurvatureFit fit) {
-  const char* fitName = fit == nvv::CurvatureFit::SheetQuadric ? "quadric (default)"
-                        : fit == nvv::CurvatureFit::PaperTaubin ? "paper Taubin" : "Euler LSQ";
+// This project with pass-2 fit `fit` and, for the quadric fit, `rounds` fit rounds.
+inline Estimator Nvv(double k, nvv::CurvatureFit fit, int rounds = nvv::Params().fitRounds) {
+  nvv::Params p = nvv_test::WithK(k, fit);
+  p.fitRounds = rounds;
+  const bool quadric = fit == nvv::CurvatureFit::SheetQuadric;
+  const bool isDefault = quadric && rounds == nvv::Params().fitRounds;
+  char fitName[48];
+  if (isDefault) std::snprintf(fitName, sizeof fitName, "quadric (default)");
+  else if (quadric) std::snprintf(fitName, sizeof fitName, "quadric, %d fit%s", rounds, rounds == 1 ? "" : "s");
+  else std::snprintf(fitName, sizeof fitName, "%s", fit == nvv::CurvatureFit::PaperTaubin ? "paper Taubin" : "Euler LSQ");
   char name[80];
   std::snprintf(name, sizeof name, "NVV %s k=%g", fitName, k);
-  return {name, fit == nvv::CurvatureFit::SheetQuadric ? 0 : 1, k,
-          [k, fit](Context& c, std::vector<Estimate>& out) {
-            nvv::Params p = nvv_test::WithK(k, fit);
-            std::vector<nvv::VertexResult> res;
-            nvv::Summary sum;
-            nvv::RunNormalVectorVoting(c.graph, p, res, sum);
-            FromNvv(res, out);
-          }};
+  Estimator e{name, isDefault ? 0 : 1, k, [p](Context& c, std::vector<Estimate>& out) {
+                std::vector<nvv::VertexResult> res;
+                nvv::Summary sum;
+                nvv::RunNormalVectorVoting(c.graph, p, res, sum);
+                FromNvv(res, out);
+              }};
+  e.params = p;
+  return e;
 }
 
 inline Estimator Vcg(const char* name, VcgMethod method, double k = 0) {

@@ -18,6 +18,8 @@ TEST(FilterOptions, TableDefaultsAreTheCoreDefaults) {
   EXPECT_EQ(p.cornerAngleDeg, o.core.cornerAngleDeg);
   EXPECT_EQ(p.stopAtCreases, o.core.stopAtCreases);
   EXPECT_EQ(p.fit, o.core.fit);
+  EXPECT_EQ(p.fitRounds, o.core.fitRounds);
+  EXPECT_EQ(p.thinCreases, o.core.thinCreases);
   EXPECT_EQ(p.classRule, o.core.classRule);
   EXPECT_EQ(p.maxNeighbourhood, o.core.maxNeighbourhood);
   EXPECT_TRUE(nvv::ValidateOptions(o).empty());

@@ -161,3 +161,50 @@ TEST(Pass1Classes, CubeCreasesAndCorners) {
   EXPECT_GE(cornerVertices, 8);
   EXPECT_LE(cornerVertices, 8 * 7);  // corners and their nearest neighbours at most
 }
+
+// At k = 5 with the crease angle at half the roof's angle, pass 1 marks a band of three or more
+// rows (creases and corners) on 60 and 90 deg roofs; thinning keeps the ridge row only, and the
+// rows it gives back get their own sheet's normal and a curvature.
+TEST(Pass1Classes, ThinningKeepsOnlyTheRidge) {
+  for (double alpha : {60.0, 90.0})
+    for (double noise : {0.0, 0.05}) {
+      SCOPED_TRACE(testing::Message() << "alpha " << alpha << " noise " << noise);
+      TMesh m;
+      nvv_shapes::Roof(m, alpha);
+      nvv_shapes::AddNoise(m, noise * nvv_shapes::MeanEdge(m), 11, nvv_shapes::AlongZ);
+      nvv::Params p = WithK(5.0);
+      p.creaseAngleDeg = alpha / 2;
+      int ridge = 0, ridgeCrease = 0, offRidgeThin = 0, offRidgePaper = 0, badNormal = 0, noCurvature = 0;
+      p.thinCreases = false;
+      const NvvRun paper = RunNvv(m, p);
+      p.thinCreases = true;
+      const NvvRun thin = RunNvv(m, p);
+      ASSERT_TRUE(paper.st.ok && thin.st.ok);
+      const double slope = std::tan(nvv::DegToRad(alpha / 2));
+      for (std::size_t i = 0; i < m.vert.size(); ++i) {
+        const auto& P = m.vert[i].cP();
+        if (std::abs(P[1]) > 10 || std::abs(P[0]) > 12) continue;
+        auto feature = [](const nvv::VertexResult& r) { return r.cls == VertexClass::Crease || r.cls == VertexClass::Corner; };
+        if (std::abs(P[0]) < 0.5) {
+          ++ridge;
+          ridgeCrease += thin.res[i].cls == VertexClass::Crease;
+          continue;
+        }
+        offRidgeThin += feature(thin.res[i]);
+        offRidgePaper += feature(paper.res[i]);
+        if (feature(paper.res[i]) && !feature(thin.res[i])) {
+          // Given back to its sheet: z = -slope |x|, outward normal (-sign(x) slope, 0, 1).
+          const Eigen::Vector3d n(P[0] > 0 ? slope : -slope, 0, 1);
+          badNormal += AngleDeg(E(thin.res[i].normal), n) > (noise > 0 ? 5.0 : 1.0);
+          noCurvature += !thin.res[i].Has(nvv::kCurvatureValid);
+        }
+      }
+      EXPECT_GE(offRidgePaper, ridge);  // the paper's band: at least one more row on each side
+      EXPECT_GE(ridgeCrease, noise > 0 ? int(0.9 * ridge) : ridge);
+      EXPECT_LE(offRidgeThin, noise > 0 ? ridge / 10 : 0);
+      EXPECT_EQ(0, badNormal);
+      EXPECT_EQ(0, noCurvature);
+      EXPECT_EQ(paper.sum.thinned, 0u);
+      EXPECT_GT(thin.sum.thinned, 0u);
+    }
+}

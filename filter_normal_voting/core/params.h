@@ -42,7 +42,13 @@ struct Params {
   double creaseAngleDeg = 60.0; // phi: smallest angle between two sheets' normals that is a crease
   double cornerAngleDeg = 60.0; // psi: the same for the third direction (corners)
   bool stopAtCreases = true;    // pass 2 does not march through non-surface vertices (par. 6.5)
+  bool thinCreases = true;      // keep only the ridge of each crease band (crease_thinning.h); paper: false
   CurvatureFit fit = CurvatureFit::SheetQuadric;
+  // SheetQuadric only: how many times pass 2 fits. Round 1 fits the voted normals of pass 1;
+  // each further round fits again, in the frame of v's fitted normal, with the neighbours'
+  // fitted normals in the slope rows (re-voting with refined normals). See docs/accuracy.md
+  // for what each round buys and costs.
+  int fitRounds = 2;
   ClassRule classRule = ClassRule::SignAware;
   double sigmaFraction = 1.0 / 3.0;  // Eq. 8: sigma = sigmaFraction * g_m (paper: 1/3)
   // Cap on the vertices one march may accept; 0 = automatic, AutoNeighbourhoodCap(). Bounds the
@@ -90,6 +96,7 @@ inline std::string ValidateParams(const Params& p) {
   if (p.maxNeighbourhood != 0 && (p.maxNeighbourhood < 16 || p.maxNeighbourhood > 10000000))
     return "The neighbourhood cap must be 0 (automatic) or between 16 and 10,000,000 vertices.";
   if (p.threads < 0 || p.threads > 4096) return "The thread count must be 0 (all) or positive.";
+  if (p.fitRounds < 1 || p.fitRounds > 4) return "The number of fit rounds must be between 1 and 4.";
   const int fit = static_cast<int>(p.fit);
   if (fit < 0 || fit > 2) return "Unknown curvature fit.";
   const int rule = static_cast<int>(p.classRule);

@@ -3,6 +3,7 @@
 #include <vcg/complex/algorithms/update/selection.h>
 
 #include <QFileInfo>
+#include <new>
 
 #include "apply/apply_results.h"
 #include "core/normal_vector_voting.h"
@@ -106,7 +107,14 @@ Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& res
   if (cb) progress = [cb](int pos, const char* text) { return cb(pos, text); };
 #endif
   std::vector<nvv::VertexResult> res;
-  const nvv::Status st = vcg::tri::NormalVectorVoting<CMeshO>::Compute(m, options.core, res, out.summary, progress);
+  nvv::Status st;
+  try {  // the compact graph and the results of a huge mesh may not fit: refuse, never throw into MeshLab
+    st = vcg::tri::NormalVectorVoting<CMeshO>::Compute(m, options.core, res, out.summary, progress);
+  } catch (const std::bad_alloc&) {
+    st = nvv::Status();
+    st.message = "Out of memory: the mesh's working copy and results did not fit.";
+    res.clear();
+  }
   if (!st.ok) {
     out.error = QStringLiteral("Normal Vector Voting: ") + QString::fromStdString(st.message) +
                 (st.cancelled ? QString() : QStringLiteral(" The mesh was not changed."));
@@ -151,6 +159,7 @@ std::map<std::string, QVariant> SummaryValues(const nvv::Summary& s) {
   v["corner_vertices"] = int(s.perClass[int(nvv::VertexClass::Corner)]);
   v["unclassified_vertices"] = int(s.perClass[int(nvv::VertexClass::Invalid)]);
   v["capped_vertices"] = int(s.capped);
+  v["thinned_vertices"] = int(s.thinned);
   v["k1_min"] = s.k1Min;
   v["k1_max"] = s.k1Max;
   v["k2_min"] = s.k2Min;

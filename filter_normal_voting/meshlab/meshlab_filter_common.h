@@ -59,6 +59,7 @@ Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& res
 
 // The run's summary as named values (PyMeshLab hands them to the script as a dict):
 // surface_vertices, crease_vertices, corner_vertices, unclassified_vertices, capped_vertices,
+// thinned_vertices,
 // k1_min, k1_max, k2_min, k2_max, absolute_radius, mean_edge_length, epsilon, eta,
 // sign_aware_rule, seconds, seconds_pass1, seconds_pass2.
 std::map<std::string, QVariant> SummaryValues(const nvv::Summary& summary);

@@ -72,6 +72,8 @@ std::vector<OptionCase> Cases() {
      [](O& o) { o.core.fit = nvv::CurvatureFit::PaperTaubin; }, true},
     {"curvature_fit_euler", {"--curvature_fit", "euler"}, {},
      [](O& o) { o.core.fit = nvv::CurvatureFit::EulerLeastSquares; }, true},
+    {"thin_creases", {"--thin_creases", "false"}, {}, [](O& o) { o.core.thinCreases = false; }, true},
+    {"fit_rounds", {"--fit_rounds", "1"}, {}, [](O& o) { o.core.fitRounds = 1; }, true},
     {"class_rule", {"--class_rule", "paper"}, {}, [](O& o) { o.core.classRule = nvv::ClassRule::PaperOrder; }, true},
     {"update_normals", {"--update_normals", "false"}, {}, [](O& o) { o.updateNormals = false; }, true},
     {"quality_gaussian", {"--quality", "gaussian"}, {}, [](O& o) { o.quality = nvv::QualityMode::GaussianCurvature; }, true},

@@ -158,6 +158,11 @@ TEST(MeshLabServer, EveryParameterIsHonoured) {
     ASSERT_TRUE(ReadPly(Out("selection"), m));
     EXPECT_EQ(base.vert.size() - CountColour(base, red) - CountColour(base, blue), m.vert.size());
   }
+  check("thin_creases", "false", [&](const MMesh& m, const ServerRun&) {
+    // The CAD part's band is thin already at k = 3: a few vertices next to its corners are thinned.
+    EXPECT_GT(CountColour(m, red) + CountColour(m, blue), CountColour(base, red) + CountColour(base, blue));
+  });
+  check("fit_rounds", "1", [&](const MMesh& m, const ServerRun&) { EXPECT_GT(MaxQualityDiff(base, m), 1e-3); });
   check("max_neighbourhood", "16", [&](const MMesh& m, const ServerRun& r) {
     EXPECT_GT(MaxQualityDiff(base, m), 1e-3);
     EXPECT_NE(std::string::npos, r.output.find("neighbourhood cap")) << r.output;

@@ -289,6 +289,14 @@ TEST(ScriptedUse, EveryParameterIsHonoured) {
     EXPECT_EQ(0, Count(base.selected));
     EXPECT_EQ(Count(r.cls, crease) + Count(r.cls, corner), Count(r.selected));
   });
+  check("thin_creases", 0, [&](const RunResult& r) {
+    // Thinning only turns band vertices into surface ones, so the difference is what the default thinned.
+    const int thinned = base.dict.at("thinned_vertices").toInt();
+    EXPECT_GT(thinned, 0);
+    EXPECT_EQ(Count(r.cls, crease) + Count(r.cls, corner), Count(base.cls, crease) + Count(base.cls, corner) + thinned);
+    EXPECT_EQ(0, r.dict.at("thinned_vertices").toInt());
+  });
+  check("fit_rounds", 1, [&](const RunResult& r) { EXPECT_GT(MaxQualityDiff(base, r), 1e-3); });
   check("max_neighbourhood", 16, [&](const RunResult& r) {
     EXPECT_GT(MaxQualityDiff(base, r), 1e-3);
     EXPECT_GT(r.dict.at("capped_vertices").toInt(), 0);
