@@ -69,8 +69,7 @@ inline std::size_t ThinCreaseBand(const SurfaceGraph& g, std::vector<VertexResul
   for (int v = 0; v < n; ++v) {
     if (!demote[v]) continue;
     VertexResult& r = res[v];
-    Eigen::Vector3d ring = Eigen::Vector3d::Zero();
-    for (int i = g.FaceBegin(v); i < g.FaceEnd(v); ++i) ring += g.faceArea[g.vfList[i]] * g.faceNormal[g.vfList[i]];
+    Eigen::Vector3d ring = g.RingNormalSum(v);
     if (!(ring.squaredNorm() > 0)) continue;
     ring.normalize();
     for (int j = 0; j < 3; ++j) r.normal[j] = float(ring[j]);

@@ -222,15 +222,15 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
   // only the previous round's values, so any thread count still gives the same bits.
   // The last round writes no normals, so two rounds need one array (12 bytes per vertex).
   std::vector<std::array<float, 3>> slopeNormal, fittedNormal;
+  const double cosPhi = std::cos(DegToRad(p.creaseAngleDeg));
+  const double slopeWeight = 2.0 * g.meanEdge;
+  auto notSurface = [&](int x) { return out[x].cls != VertexClass::Surface; };
   for (int round = 0; round < rounds; ++round) {
     const bool last = round == rounds - 1;
     if (!last) fittedNormal.resize(g.VertexCount());
-    const double cosPhi = std::cos(DegToRad(p.creaseAngleDeg));
-    const double slopeWeight = 2.0 * g.meanEdge;
     const std::string text = rounds == 1 ? std::string("Normal vector voting: curvature")
         : "Normal vector voting: curvature, fit " + std::to_string(round + 1) + " of " + std::to_string(rounds);
     PassProgress prog(cb, g.VertexCount(), share * (1 + round), last ? 100 : share * (2 + round), text.c_str());
-    auto notSurface = [&](int x) { return out[x].cls != VertexClass::Surface; };
     // The normal the fit of this round uses for vertex x: pass 1's, then the previous round's.
     auto normalOf = [&](int x) {
       return round == 0 ? ToVec(out[x].normal) : ToVec(slopeNormal[x].data());

@@ -73,11 +73,9 @@ inline void VoteNormal(const SurfaceGraph& g, GeodesicMarch& march, int v, const
     }
   }
   // The one-ring always votes (its far vertices may lie beyond a small g_m).
-  Eigen::Vector3d ringNormal = Eigen::Vector3d::Zero();
   for (int i = g.FaceBegin(v); i < g.FaceEnd(v); ++i) {
     const int fi = g.vfList[i];
     const auto& f = g.face[fi];
-    ringNormal += g.faceArea[fi] * g.faceNormal[fi];
     if (march.IsReached(f[0]) && march.IsReached(f[1]) && march.IsReached(f[2])) continue;
     AddTriangleVote(g, march, v, fi, s, V, m);
   }
@@ -105,6 +103,7 @@ inline void VoteNormal(const SurfaceGraph& g, GeodesicMarch& march, int v, const
 
   // Orient E1 with the area-weighted one-ring normal (falls back to the mean vote).
   Eigen::Vector3d n = E[0];
+  const Eigen::Vector3d ringNormal = g.RingNormalSum(v);
   const Eigen::Vector3d ref = ringNormal.squaredNorm() > 0 ? ringNormal : m;
   if (n.dot(ref) < 0) n = -n;
   for (int j = 0; j < 3; ++j) r.normal[j] = float(n[j]);
