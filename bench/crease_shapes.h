@@ -91,19 +91,6 @@ inline VertexTruth CreaseTruthAt(const CreaseShape& s, const vcg::Point3d& q) {
   return t;
 }
 
-// Gaussian noise of standard deviation sigma along the clean mesh's angle-weighted normals
-// (the true normal on the faces, the bisector on the creases).
-inline void NoiseAlongNormals(TMesh& m, double sigma, unsigned seed) {
-  if (!(sigma > 0)) return;
-  const std::vector<Eigen::Vector3d> n = AngleWeightedNormals(m);
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> g(0, sigma);
-  for (std::size_t i = 0; i < m.vert.size(); ++i) {
-    const Eigen::Vector3d d = n[i] * g(rng);
-    m.vert[i].P() += vcg::Point3d(d.x(), d.y(), d.z());
-  }
-}
-
 struct F1 {
   double precision = 0, recall = 0, f1 = 0;
 };

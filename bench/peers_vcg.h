@@ -6,6 +6,7 @@
 #define NVV_BENCH_PEERS_VCG_H
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "test_mesh.h"  // vcg/complex/complex.h first, as vcglib requires
@@ -69,6 +70,19 @@ inline std::vector<Eigen::Vector3d> AngleWeightedNormals(const TMesh& src) {
   std::vector<Eigen::Vector3d> n(m.vert.size());
   for (std::size_t i = 0; i < m.vert.size(); ++i) n[i] = Eigen::Vector3d(m.vert[i].cN()[0], m.vert[i].cN()[1], m.vert[i].cN()[2]);
   return n;
+}
+
+// Gaussian noise of standard deviation sigma along the clean mesh's angle-weighted normals
+// (the true normal on smooth parts and faces, the bisector on creases).
+inline void NoiseAlongNormals(TMesh& m, double sigma, unsigned seed) {
+  if (!(sigma > 0)) return;
+  const std::vector<Eigen::Vector3d> n = AngleWeightedNormals(m);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0, sigma);
+  for (std::size_t i = 0; i < m.vert.size(); ++i) {
+    const Eigen::Vector3d d = n[i] * g(rng);
+    m.vert[i].P() += vcg::Point3d(d.x(), d.y(), d.z());
+  }
 }
 
 // MeshLab's "Select Crease Edges" with both thresholds at +-angleDeg; 1 for vertices of

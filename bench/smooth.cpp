@@ -91,17 +91,9 @@ void MeasureOne(const ShapeSet& s, double noise, Estimator& est, Errors& acc, st
     Build(s, seed, clean);
     Build(s, seed, m);
     const double sigma = noise * nvv_shapes::MeanEdge(m);
-    if (s.paperGrid) nvv_shapes::AddNoise(m, sigma, 1000 * seed + unsigned(noise * 1000), nvv_shapes::AlongZ);
-    else {
-      const std::vector<Eigen::Vector3d> nrm = AngleWeightedNormals(clean);
-      std::mt19937 rng(1000 * seed + unsigned(noise * 1000));
-      std::normal_distribution<double> g(0, sigma > 0 ? sigma : 1);
-      if (sigma > 0)
-        for (std::size_t i = 0; i < m.vert.size(); ++i) {
-          const Eigen::Vector3d d = nrm[i] * g(rng);
-          m.vert[i].P() += vcg::Point3d(d.x(), d.y(), d.z());
-        }
-    }
+    const unsigned noiseSeed = 1000 * seed + unsigned(noise * 1000);
+    if (s.paperGrid) nvv_shapes::AddNoise(m, sigma, noiseSeed, nvv_shapes::AlongZ);
+    else NoiseAlongNormals(m, sigma, noiseSeed);
     Context c(m);
     std::vector<Estimate> e;
     est.fn(c, e);
