@@ -7,7 +7,7 @@
 # Configures build-speed/ (Release, benchmarks on), builds only nvv_bench_speed, runs it and
 # writes its output to build-speed/speed-bench.md (plus the machine's description). Needs
 # ../shared/meshes/real/turbineblade.ply next to the repository (or pass SHARED_MESHES=dir).
-# The default plan takes about half an hour on two cores; --quick about three minutes.
+# The default plan takes about ten minutes on two idle cores; --quick about two; --full about 30.
 # docs/performance.md quotes the latest output.
 #
 # On a machine shared with other jobs, set NVV_LOCK=/path/to/lockfile: every heavy step then
