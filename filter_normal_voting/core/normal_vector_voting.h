@@ -33,6 +33,7 @@
 #include <omp.h>
 #endif
 
+#include "ball_flood.h"
 #include "crease_curvature.h"
 #include "crease_thinning.h"
 #include "curvature_votes.h"
@@ -118,7 +119,7 @@ PassEnd ParallelOverVertices(const SurfaceGraph& g, int threads, PassProgress& p
   {
     try {
       GeodesicMarch march(g);
-      Scratch scratch;
+      Scratch scratch(g);
       const bool mainThread = ThreadId() == 0;
 #pragma omp for schedule(dynamic, 64)
       for (int v = 0; v < n; ++v) {
@@ -143,6 +144,8 @@ inline Status Unfinished(PassEnd end) {
 }
 
 struct Pass2Scratch {
+  explicit Pass2Scratch(const SurfaceGraph& g) : flood(g) {}
+  BallFlood flood;
   std::vector<CurvatureVote> votes;
   std::vector<SheetSample> samples;
 };
@@ -206,7 +209,9 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
   // Pass 1: classes and normals.
   {
     PassProgress prog(cb, g.VertexCount(), 0, share, "Normal vector voting: normals and classes");
-    struct None {};
+    struct None {
+      explicit None(const SurfaceGraph&) {}
+    };
     const PassEnd end = ParallelOverVertices<None>(g, threads, prog, [&](int v, GeodesicMarch& march, None&) {
       VoteNormal(g, march, v, s1, out[v]);
     });
@@ -245,15 +250,16 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
         return;
       }
       if (r.cls != VertexClass::Surface) return;
-      bool complete = p.stopAtCreases ? march.Run(v, s1.radius, s1.maxNeighbourhood, notSurface)
-                                      : march.Run(v, s1.radius, s1.maxNeighbourhood);
-      if (!complete) r.flags |= kNeighbourhoodCapped;
       const Eigen::Vector3d Nv = normalOf(v).normalized();
       const TangentFrame F(Nv);
       PrincipalCurvatures pc;
       if (p.fit == CurvatureFit::SheetQuadric) {
+        // The fit needs M_v but no distances: the ball flood finds it (ball_flood.h).
+        const bool complete = p.stopAtCreases ? sc.flood.Run(v, s1.radius, s1.maxNeighbourhood, notSurface)
+                                              : sc.flood.Run(v, s1.radius, s1.maxNeighbourhood);
+        if (!complete) r.flags |= kNeighbourhoodCapped;
         sc.samples.clear();
-        for (int x : march.Reached()) {
+        for (int x : sc.flood.Reached()) {
           if (out[x].cls != VertexClass::Surface) continue;
           sc.samples.push_back({g.pos[x] - g.pos[v], normalOf(x)});
         }
@@ -264,6 +270,9 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
           return;
         }
       } else {
+        const bool complete = p.stopAtCreases ? march.Run(v, s1.radius, s1.maxNeighbourhood, notSurface)
+                                              : march.Run(v, s1.radius, s1.maxNeighbourhood);
+        if (!complete) r.flags |= kNeighbourhoodCapped;
         sc.votes.clear();
         for (int x : march.Reached()) {
           if (x == v || out[x].cls != VertexClass::Surface) continue;

@@ -67,8 +67,9 @@ inline void VoteNormal(const SurfaceGraph& g, GeodesicMarch& march, int v, const
     for (int i = g.FaceBegin(x); i < g.FaceEnd(x); ++i) {
       const int fi = g.vfList[i];
       const auto& f = g.face[fi];
-      if (!march.IsReached(f[0]) || !march.IsReached(f[1]) || !march.IsReached(f[2])) continue;
+      // The index test first: it needs no scratch load and rejects two of every three visits.
       if (x != std::min(f[0], std::min(f[1], f[2]))) continue;
+      if (!march.IsReached(f[0]) || !march.IsReached(f[1]) || !march.IsReached(f[2])) continue;
       AddTriangleVote(g, march, v, fi, s, V, m);
     }
   }

@@ -2,7 +2,7 @@
 // the paper's form in docs/accuracy.md).
 //
 // In the frame (e1, e2, N) of v's voted normal, every same-sheet neighbour i (the SURFACE
-// vertices the crease-stopping march reaches, v included) at (u_i, w_i, h_i) with voted
+// vertices the crease-stopping flood reaches, ball_flood.h, v included) at (u_i, w_i, h_i) with voted
 // normal (n_u, n_w, n_h) gives three rows of a weighted least-squares problem for
 //   h(u, w) = a u^2 + b u w + c w^2 + d u + e w + f:
 //   height:  h(u_i, w_i)               = h_i
@@ -41,8 +41,12 @@ inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vec
   PrincipalCurvatures pc;
   typedef Eigen::Matrix<double, 6, 6> Mat6;
   typedef Eigen::Matrix<double, 6, 1> Vec6;
-  Mat6 A = Mat6::Zero();
-  Vec6 rhs = Vec6::Zero();
+  // The normal equations are sums of monomials in (u, w): with the height row
+  // r = (u^2, uw, w^2, u, w, 1), sum w_i r r' needs the 15 moments of degree <= 4, sum w_i h r six
+  // more; the slope rows need six moments of degree <= 2 and six of the slopes. Accumulating
+  // those 33 sums costs a third of the three 6x6 outer products per sample they replace (the
+  // fit was the largest item of pass 2's profile); A and rhs are assembled once below.
+  double M[15] = {0}, Mh[6] = {0}, S[6] = {0}, T[6] = {0};
   const double sw2 = (slopeWeight / scale) * (slopeWeight / scale);
   int used = 0;
   for (const auto& s : samples) {
@@ -51,21 +55,44 @@ inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vec
     const double w = std::min(1.0, agree) * std::min(1.0, agree);
     // Coordinates scaled by 1/scale keep the 6x6 system well conditioned at any mesh scale.
     const double u = F.e1.dot(s.d) / scale, v = F.e2.dot(s.d) / scale, h = F.n.dot(s.d) / scale;
-    Vec6 row;
-    row << u * u, u * v, v * v, u, v, 1;
-    A.noalias() += w * row * row.transpose();
-    rhs += w * h * row;
+    const double uu = u * u, uv = u * v, vv = v * v;
+    const double wu = w * u, wv = w * v, wuu = w * uu, wuv = w * uv, wvv = w * vv;
+    M[0] += w;  M[1] += wu;  M[2] += wv;  M[3] += wuu;  M[4] += wuv;  M[5] += wvv;
+    M[6] += wuu * u;  M[7] += wuu * v;  M[8] += wvv * u;  M[9] += wvv * v;
+    M[10] += wuu * uu;  M[11] += wuu * uv;  M[12] += wuu * vv;  M[13] += wuv * vv;  M[14] += wvv * vv;
+    const double wh = w * h;
+    Mh[0] += wh * uu;  Mh[1] += wh * uv;  Mh[2] += wh * vv;  Mh[3] += wh * u;  Mh[4] += wh * v;  Mh[5] += wh;
     const double nh = F.n.dot(s.n);
     if (nh > 0.2) {  // a normal turned away from N (> 78 deg) says little about this sheet
-      const double su = -F.e1.dot(s.n), sv = -F.e2.dot(s.n);
-      Vec6 ru, rv;
-      ru << 2 * u, v, 0, 1, 0, 0;
-      rv << 0, u, 2 * v, 0, 1, 0;
-      A.noalias() += w * sw2 * (ru * ru.transpose() + rv * rv.transpose());
-      rhs += w * sw2 * (su * ru + sv * rv);
+      const double ws = w * sw2, su = -F.e1.dot(s.n), sv = -F.e2.dot(s.n);
+      S[0] += ws;  S[1] += ws * u;  S[2] += ws * v;  S[3] += ws * uu;  S[4] += ws * uv;  S[5] += ws * vv;
+      const double wsu = ws * su, wsv = ws * sv;
+      T[0] += wsu * u;  T[1] += wsu * v;  T[2] += wsv * u;  T[3] += wsv * v;  T[4] += wsu;  T[5] += wsv;
     }
     ++used;
   }
+  // Height rows: A(i, j) = sum w r_i r_j.
+  Mat6 A;
+  A << M[10], M[11], M[12], M[6], M[7], M[3],
+       M[11], M[12], M[13], M[7], M[8], M[4],
+       M[12], M[13], M[14], M[8], M[9], M[5],
+       M[6],  M[7],  M[8],  M[3], M[4], M[1],
+       M[7],  M[8],  M[9],  M[4], M[5], M[2],
+       M[3],  M[4],  M[5],  M[1], M[2], M[0];
+  // Slope rows r_u = (2u, w, 0, 1, 0, 0) and r_w = (0, u, 2w, 0, 1, 0): sum ws (r_u r_u' + r_w r_w').
+  A(0, 0) += 4 * S[3];
+  A(0, 1) += 2 * S[4];  A(1, 0) += 2 * S[4];
+  A(0, 3) += 2 * S[1];  A(3, 0) += 2 * S[1];
+  A(1, 1) += S[3] + S[5];
+  A(1, 2) += 2 * S[4];  A(2, 1) += 2 * S[4];
+  A(1, 3) += S[2];      A(3, 1) += S[2];
+  A(1, 4) += S[1];      A(4, 1) += S[1];
+  A(2, 2) += 4 * S[5];
+  A(2, 4) += 2 * S[2];  A(4, 2) += 2 * S[2];
+  A(3, 3) += S[0];
+  A(4, 4) += S[0];
+  Vec6 rhs;
+  rhs << Mh[0] + 2 * T[0], Mh[1] + T[1] + T[2], Mh[2] + 2 * T[3], Mh[3] + T[4], Mh[4] + T[5], Mh[5];
   if (used < 3) return pc;
   // Too few or collinear samples leave A (nearly) singular: refuse rather than fit noise. The
   // LDLT's reciprocal condition estimate does what a 6x6 eigen-decomposition did, for the cost

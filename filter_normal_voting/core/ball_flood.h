@@ -1,0 +1,77 @@
+// Same-sheet neighbourhood of one vertex for the quadric fit of pass 2: the vertices joined to
+// the source by a path of mesh edges that stays inside the Euclidean ball |x - v| <= g_m.
+//
+// The fit (sheet_fit.h) weighs its samples by normal agreement only, never by distance, so it
+// needs the set M_v, not the distances the fast march (geodesic_march.h) computes to build it.
+// The flood finds the same set up to the ball's rim: g >= |x - v| everywhere and, within
+// g_m <= a few l_ave of a surface whose radii of curvature are tens of l_ave, the two differ by
+// g^3 / (24 R^2), far below an edge length; across a crease the march stops at the crease's
+// vertices either way (`blocked`). It costs a stamp test and one squared distance per edge end,
+// where the march pays two planar unfoldings and an indexed-heap update per face corner: on a
+// 1 M-vertex torus at k = 3 the march was 44 % of the whole filter's profile, two thirds of it
+// in pass 2's fit rounds (docs/performance.md gives the timings before and after).
+//
+// Scratch state is per instance (one per thread): a stamp per vertex, so a new flood resets in
+// O(1); the stamps are cleared only when the 32-bit counter wraps.
+#ifndef NVV_CORE_BALL_FLOOD_H
+#define NVV_CORE_BALL_FLOOD_H
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "surface_graph.h"
+
+namespace nvv {
+
+class BallFlood {
+ public:
+  explicit BallFlood(const SurfaceGraph& g) : g_(g), stamp_(g.VertexCount(), 0) {}
+
+  // Floods from `source` through vertices within `radius` of it, breadth first, until
+  // `maxVertices` are reached. `blocked(v)` true: v is reached but the flood does not go on
+  // through it (as GeodesicMarch::Run). Returns false when it stopped at maxVertices.
+  template <class Blocked>
+  bool Run(int source, double radius, int maxVertices, Blocked blocked) {
+    if (++current_ == 0) {  // the counter wrapped: old stamps could collide
+      std::fill(stamp_.begin(), stamp_.end(), 0u);
+      current_ = 1;
+    }
+    reached_.clear();
+    const Eigen::Vector3d& c = g_.pos[source];
+    const double r2 = radius * radius;
+    stamp_[source] = current_;
+    reached_.push_back(source);
+    // reached_ is its own queue: entries before `next` have been expanded.
+    for (std::size_t next = 0; next < reached_.size(); ++next) {
+      const int x = reached_[next];
+      if (x != source && blocked(x)) continue;
+      for (int i = g_.FaceBegin(x); i < g_.FaceEnd(x); ++i) {
+        for (int y : g_.face[g_.vfList[i]]) {
+          if (stamp_[y] == current_) continue;
+          stamp_[y] = current_;  // seen: inside or outside, it is tested once
+          if ((g_.pos[y] - c).squaredNorm() > r2) continue;
+          if (int(reached_.size()) >= maxVertices) return false;
+          reached_.push_back(y);
+        }
+      }
+    }
+    return true;
+  }
+  bool Run(int source, double radius, int maxVertices) {
+    return Run(source, radius, maxVertices, [](int) { return false; });
+  }
+
+  // Reached vertices in breadth-first order; the source first.
+  const std::vector<int>& Reached() const { return reached_; }
+
+ private:
+  const SurfaceGraph& g_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t current_ = 0;
+  std::vector<int> reached_;
+};
+
+}  // namespace nvv
+
+#endif
