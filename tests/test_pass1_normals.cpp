@@ -165,6 +165,58 @@ TEST(Pass1Classes, CubeCreasesAndCorners) {
 // At k = 5 with the crease angle at half the roof's angle, pass 1 marks a band of three or more
 // rows (creases and corners) on 60 and 90 deg roofs; thinning keeps the ridge row only, and the
 // rows it gives back get their own sheet's normal and a curvature.
+// Thinning must not eat true creases: the first vertex of a cube's edge next to a corner (the
+// diagonal neighbour of the next edge's first vertex), and both creases of a step one edge tall.
+TEST(Pass1Classes, ThinningKeepsCreasesThatMeetOrRunOneEdgeApart) {
+  auto feature = [](const nvv::VertexResult& r) { return r.cls == VertexClass::Crease || r.cls == VertexClass::Corner; };
+  {
+    TMesh m;
+    nvv_shapes::Cube(m, 8, 17);
+    nvv::Params p = WithK(3.0);
+    p.creaseAngleDeg = 45;
+    const NvvRun r = RunNvv(m, p);
+    ASSERT_TRUE(r.st.ok);
+    int edge = 0, edgeFound = 0, faceFound = 0;
+    for (std::size_t i = 0; i < m.vert.size(); ++i) {
+      int onFace = 0;
+      for (int a = 0; a < 3; ++a) onFace += std::abs(std::abs(m.vert[i].cP()[a]) - 8) < 1e-9;
+      if (onFace >= 2) { ++edge; edgeFound += feature(r.res[i]); }
+      else faceFound += feature(r.res[i]);
+    }
+    EXPECT_EQ(edge, 12 * 15 + 8);
+    EXPECT_EQ(edgeFound, edge);
+    EXPECT_EQ(faceFound, 0);
+  }
+  {
+    // Columns 0..16 top (z = 0), the wall's foot at column 17 right below column 16, 18..33 bottom.
+    TMesh m;
+    nvv_shapes::ParametricGrid(m, 34, 33, [](double s, double t) {
+      const int c = int(std::lround(s * 33));
+      const double y = 32 * (t - 0.5);
+      if (c <= 16) return vcg::Point3d(c - 16, y, 0);
+      return vcg::Point3d(c - 17, y, -1);
+    });
+    nvv::Params p = WithK(3.0);
+    p.creaseAngleDeg = 45;
+    const NvvRun r = RunNvv(m, p);
+    ASSERT_TRUE(r.st.ok);
+    int top = 0, topFound = 0, foot = 0, footFound = 0, flankFound = 0;
+    for (std::size_t i = 0; i < m.vert.size(); ++i) {
+      const auto& P = m.vert[i].cP();
+      if (std::abs(P[1]) > 10) continue;
+      const bool isTop = std::abs(P[0]) < 1e-9 && std::abs(P[2]) < 1e-9;
+      const bool isFoot = std::abs(P[0]) < 1e-9 && std::abs(P[2] + 1) < 1e-9;
+      if (isTop) { ++top; topFound += feature(r.res[i]); }
+      else if (isFoot) { ++foot; footFound += feature(r.res[i]); }
+      else flankFound += feature(r.res[i]);
+    }
+    EXPECT_GT(top, 15);
+    EXPECT_EQ(topFound, top);
+    EXPECT_EQ(footFound, foot);
+    EXPECT_EQ(flankFound, 0);
+  }
+}
+
 TEST(Pass1Classes, ThinningKeepsOnlyTheRidge) {
   for (double alpha : {60.0, 90.0})
     for (double noise : {0.0, 0.05}) {

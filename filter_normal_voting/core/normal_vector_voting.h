@@ -217,7 +217,7 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
     });
     if (end != PassEnd::Done) return Unfinished(end);
   }
-  if (p.thinCreases) sum.thinned = ThinCreaseBand(g, out, threads);
+  if (p.thinCreases) sum.thinned = ThinCreaseBand(g, out, threads, p.creaseAngleDeg);
   sum.secondsPass1 = Seconds(t0);
   const auto t1 = std::chrono::steady_clock::now();
 
