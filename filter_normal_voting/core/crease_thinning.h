@@ -99,10 +99,12 @@ inline bool OnSharpEdge(const SurfaceGraph& g, const std::vector<VertexResult>& 
 }
 
 // Median over the mesh's interior edges of the angle (radians) between the normals of the two
-// faces sharing it: 0 on a clean CAD mesh, a few degrees on a noisy scan.
+// faces sharing it: 0 on a clean CAD mesh, a few degrees on a noisy scan. Estimated from the
+// edges of at most ~100,000 evenly spread faces, so it costs little and holds little on any mesh.
 inline double MedianEdgeAngle(const SurfaceGraph& g) {
   std::vector<float> angles;
-  for (int f = 0; f < g.FaceCount(); ++f) {
+  const int stride = std::max(1, g.FaceCount() / 100000);
+  for (int f = 0; f < g.FaceCount(); f += stride) {
     if (!(g.faceArea[f] > 0)) continue;
     for (int j = 0; j < 3; ++j) {
       const int a = g.face[f][j], b = g.face[f][(j + 1) % 3];

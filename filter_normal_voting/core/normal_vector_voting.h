@@ -22,11 +22,13 @@
 #ifndef NVV_CORE_NORMAL_VECTOR_VOTING_H
 #define NVV_CORE_NORMAL_VECTOR_VOTING_H
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 #ifdef _OPENMP
@@ -107,7 +109,7 @@ inline double Seconds(std::chrono::steady_clock::time_point a) {
 
 enum class PassEnd { Done, Cancelled, OutOfMemory };
 
-// Runs body(v, march, scratch) for every vertex in parallel, in index order: consecutive
+// Runs body(v, scratch) for every vertex in parallel, one Scratch(g) per thread, in index order: consecutive
 // vertices of scanned and generated meshes are near each other, so consecutive marches reuse
 // what the last one brought into cache (a breadth-first order was measured too: 6 % faster on
 // one thread on the twice-subdivided blade, 8-33 % slower on every other run).
@@ -118,13 +120,12 @@ PassEnd ParallelOverVertices(const SurfaceGraph& g, int threads, PassProgress& p
 #pragma omp parallel num_threads(threads)
   {
     try {
-      GeodesicMarch march(g);
       Scratch scratch(g);
       const bool mainThread = ThreadId() == 0;
 #pragma omp for schedule(dynamic, 64)
       for (int v = 0; v < n; ++v) {
         if (progress.Cancelled() || failed.load(std::memory_order_relaxed)) continue;
-        body(v, march, scratch);
+        body(v, scratch);
         progress.Tick(mainThread);
       }
     } catch (...) {  // bad_alloc: never let an exception cross the OpenMP region
@@ -143,9 +144,22 @@ inline Status Unfinished(PassEnd end) {
   return st;
 }
 
+// The flood (quadric fit) and the march (the paper's vote forms) each hold O(n) state per
+// thread; a fit round allocates only the one its form uses (a march is 13 bytes per vertex and
+// thread: 0.09 x the mesh on two threads, the torus of docs/performance.md).
 struct Pass2Scratch {
-  explicit Pass2Scratch(const SurfaceGraph& g) : flood(g) {}
-  BallFlood flood;
+  explicit Pass2Scratch(const SurfaceGraph& graph) : g(graph) {}
+  BallFlood& Flood() {
+    if (!flood) flood.reset(new BallFlood(g));
+    return *flood;
+  }
+  GeodesicMarch& March() {
+    if (!march) march.reset(new GeodesicMarch(g));
+    return *march;
+  }
+  const SurfaceGraph& g;
+  std::unique_ptr<BallFlood> flood;
+  std::unique_ptr<GeodesicMarch> march;
   std::vector<CurvatureVote> votes;
   std::vector<SheetSample> samples;
 };
@@ -209,10 +223,7 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
   // Pass 1: classes and normals.
   {
     PassProgress prog(cb, g.VertexCount(), 0, share, "Normal vector voting: normals and classes");
-    struct None {
-      explicit None(const SurfaceGraph&) {}
-    };
-    const PassEnd end = ParallelOverVertices<None>(g, threads, prog, [&](int v, GeodesicMarch& march, None&) {
+    const PassEnd end = ParallelOverVertices<GeodesicMarch>(g, threads, prog, [&](int v, GeodesicMarch& march) {
       VoteNormal(g, march, v, s1, out[v]);
     });
     if (end != PassEnd::Done) return Unfinished(end);
@@ -241,25 +252,20 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
       return round == 0 ? ToVec(out[x].normal) : ToVec(slopeNormal[x].data());
     };
     const PassEnd end = ParallelOverVertices<Pass2Scratch>(g, threads, prog,
-        [&](int v, GeodesicMarch& march, Pass2Scratch& sc) {
+        [&](int v, Pass2Scratch& sc) {
       VertexResult& r = out[v];
-      if (r.cls == VertexClass::Crease) {
-        if (round > 0) return;
-        if (!march.Run(v, s1.radius, s1.maxNeighbourhood)) r.flags |= kNeighbourhoodCapped;
-        r.creaseCurvature = float(CreaseCurvature(march, out, v, s1.sigma));
-        return;
-      }
       if (r.cls != VertexClass::Surface) return;
       const Eigen::Vector3d Nv = normalOf(v).normalized();
       const TangentFrame F(Nv);
       PrincipalCurvatures pc;
       if (p.fit == CurvatureFit::SheetQuadric) {
         // The fit needs M_v but no distances: the ball flood finds it (ball_flood.h).
-        const bool complete = p.stopAtCreases ? sc.flood.Run(v, s1.radius, s1.maxNeighbourhood, notSurface)
-                                              : sc.flood.Run(v, s1.radius, s1.maxNeighbourhood);
+        BallFlood& flood = sc.Flood();
+        const bool complete = p.stopAtCreases ? flood.Run(v, s1.radius, s1.maxNeighbourhood, notSurface)
+                                              : flood.Run(v, s1.radius, s1.maxNeighbourhood);
         if (!complete) r.flags |= kNeighbourhoodCapped;
         sc.samples.clear();
-        for (int x : sc.flood.Reached()) {
+        for (int x : flood.Reached()) {
           if (out[x].cls != VertexClass::Surface) continue;
           sc.samples.push_back({g.pos[x] - g.pos[v], normalOf(x)});
         }
@@ -270,6 +276,7 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
           return;
         }
       } else {
+        GeodesicMarch& march = sc.March();
         const bool complete = p.stopAtCreases ? march.Run(v, s1.radius, s1.maxNeighbourhood, notSurface)
                                               : march.Run(v, s1.radius, s1.maxNeighbourhood);
         if (!complete) r.flags |= kNeighbourhoodCapped;
@@ -294,6 +301,18 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
     });
     if (end != PassEnd::Done) return Unfinished(end);
     if (!last) slopeNormal.swap(fittedNormal);
+  }
+  // Curvature along creases (par. 6.5) needs distances, so a march; in a pass of its own, so a
+  // thread never holds the march and the fits' flood at once. It reads pass-1 fields only.
+  if (std::any_of(out.begin(), out.end(), [](const VertexResult& r) { return r.cls == VertexClass::Crease; })) {
+    PassProgress prog(cb, g.VertexCount(), 100, 100, "Normal vector voting: curvature along creases");
+    const PassEnd end = ParallelOverVertices<GeodesicMarch>(g, threads, prog, [&](int v, GeodesicMarch& march) {
+      VertexResult& r = out[v];
+      if (r.cls != VertexClass::Crease) return;
+      if (!march.Run(v, s1.radius, s1.maxNeighbourhood)) r.flags |= kNeighbourhoodCapped;
+      r.creaseCurvature = float(CreaseCurvature(march, out, v, s1.sigma));
+    });
+    if (end != PassEnd::Done) return Unfinished(end);
   }
   sum.secondsPass2 = Seconds(t1);
   // Fitted normals are written after the pass, so every fit saw only the previous round's normals.

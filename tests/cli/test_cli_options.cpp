@@ -72,7 +72,9 @@ std::vector<OptionCase> Cases() {
      [](O& o) { o.core.fit = nvv::CurvatureFit::PaperTaubin; }, true},
     {"curvature_fit_euler", {"--curvature_fit", "euler"}, {},
      [](O& o) { o.core.fit = nvv::CurvatureFit::EulerLeastSquares; }, true},
-    {"thin_creases", {"--thin_creases", "false"}, {}, [](O& o) { o.core.thinCreases = false; }, true},
+    // At the default 60 deg the CAD part's band is one vertex wide already; at 30 deg it is wide.
+    {"thin_creases", {"--crease_angle", "30", "--thin_creases", "false"}, {"--crease_angle", "30"},
+     [](O& o) { o.core.creaseAngleDeg = 30; o.core.thinCreases = false; }, true},
     {"fit_rounds", {"--fit_rounds", "1"}, {}, [](O& o) { o.core.fitRounds = 1; }, true},
     {"class_rule", {"--class_rule", "paper"}, {}, [](O& o) { o.core.classRule = nvv::ClassRule::PaperOrder; }, true},
     {"update_normals", {"--update_normals", "false"}, {}, [](O& o) { o.updateNormals = false; }, true},
