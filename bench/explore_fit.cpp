@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
       std::vector<nvv::VertexResult> res;
       nvv::Summary sum;
       nvv::RunNormalVectorVoting(g, p, res, sum);
-      nvv::GeodesicMarch march(g);
+      nvv::BallFlood flood(g);  // the neighbourhood pass 2 of the core uses
       std::vector<nvv::SheetSample> samples;
       std::vector<Eigen::Vector3d> normal(g.VertexCount());
       for (int v = 0; v < g.VertexCount(); ++v) normal[v] = nvv::ToVec(res[v].normal).normalized();
@@ -49,9 +49,9 @@ int main(int argc, char** argv) {
       for (int pass = 0; pass < fits; ++pass) {
         for (int v = 0; v < g.VertexCount(); ++v) {
           if (res[v].cls != nvv::VertexClass::Surface) continue;
-          march.Run(v, sum.radius, 1 << 20, [&](int x) { return res[x].cls != nvv::VertexClass::Surface; });
+          flood.Run(v, sum.radius, 1 << 20, [&](int x) { return res[x].cls != nvv::VertexClass::Surface; });
           samples.clear();
-          for (int x : march.Reached())
+          for (int x : flood.Reached())
             if (res[x].cls == nvv::VertexClass::Surface) samples.push_back({g.pos[x] - g.pos[v], normal[x]});
           fit[v] = nvv::SheetQuadricFit(nvv::TangentFrame(normal[v]), samples, sum.radius, sw * g.meanEdge,
                                         std::cos(nvv::DegToRad(60)));
