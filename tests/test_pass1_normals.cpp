@@ -162,13 +162,10 @@ TEST(Pass1Classes, CubeCreasesAndCorners) {
   EXPECT_LE(cornerVertices, 8 * 7);  // corners and their nearest neighbours at most
 }
 
-// At k = 5 with the crease angle at half the roof's angle, pass 1 marks a band of three or more
-// rows (creases and corners) on 60 and 90 deg roofs; thinning keeps the ridge row only, and the
-// rows it gives back get their own sheet's normal and a curvature.
 // Thinning must not eat true creases: the first vertex of a cube's edge next to a corner (the
 // diagonal neighbour of the next edge's first vertex), and both creases of a step one edge tall.
 TEST(Pass1Classes, ThinningKeepsCreasesThatMeetOrRunOneEdgeApart) {
-  auto feature = [](const nvv::VertexResult& r) { return r.cls == VertexClass::Crease || r.cls == VertexClass::Corner; };
+  const auto feature = nvv::IsFeature;
   {
     TMesh m;
     nvv_shapes::Cube(m, 8, 17);
@@ -217,6 +214,9 @@ TEST(Pass1Classes, ThinningKeepsCreasesThatMeetOrRunOneEdgeApart) {
   }
 }
 
+// At k = 5 with the crease angle at half the roof's angle, pass 1 marks a band of three or more
+// rows (creases and corners) on 60 and 90 deg roofs; thinning keeps the ridge row only, and the
+// rows it gives back get their own sheet's normal and a curvature.
 TEST(Pass1Classes, ThinningKeepsOnlyTheRidge) {
   for (double alpha : {60.0, 90.0})
     for (double noise : {0.0, 0.05}) {
@@ -236,7 +236,7 @@ TEST(Pass1Classes, ThinningKeepsOnlyTheRidge) {
       for (std::size_t i = 0; i < m.vert.size(); ++i) {
         const auto& P = m.vert[i].cP();
         if (std::abs(P[1]) > 10 || std::abs(P[0]) > 12) continue;
-        auto feature = [](const nvv::VertexResult& r) { return r.cls == VertexClass::Crease || r.cls == VertexClass::Corner; };
+        const auto feature = nvv::IsFeature;
         if (std::abs(P[0]) < 0.5) {
           ++ridge;
           ridgeCrease += thin.res[i].cls == VertexClass::Crease;

@@ -18,8 +18,8 @@
 // Two exceptions keep true creases: a CREASE neighbour whose tangent is more than 45 deg off
 // v's lies on another crease (at a cube's corner the first vertex of one edge is the diagonal
 // neighbour of the first vertex of the next), so it is not compared; and a crease vertex with
-// two sharp mesh edges along its own crease (OnSharpEdge) is on a ridge of the mesh itself and stays
-// (a chamfer's two creases, one edge apart). On the clean cube F1 went 0.98 -> 1.00, on the ABC
+// two sharp mesh edges along its own crease (OnSharpEdge) is on a ridge of the mesh itself and
+// stays (a chamfer's two creases, one edge apart). On the clean cube F1 went 0.98 -> 1.00, on the ABC
 // model 0.93 -> 0.99 (docs/accuracy.md).
 // The others become SURFACE vertices: their normal restarts from the area-weighted normal of
 // their one-ring (off the ridge its faces lie on one sheet, while pass 1's E1 there mixes both
@@ -70,29 +70,28 @@ inline bool OffRidge(const SurfaceGraph& g, const std::vector<VertexResult>& res
 }
 
 // True when CREASE vertex v lies on a crease of the mesh itself: at least two of its edges
-// (v, x) have faces whose normals are more than the crease angle apart (cosSharp = cos phi) and
-// run along v's crease tangent (|cos| > 0.8), as the two ridge edges through a vertex of a
-// crease line do (corners are not vetoed: on the noisy capped cylinder that kept flank corners,
-// F1 0.87 -> 0.71 at 10 % noise). Such a v is a ridge, not the flank of one: two parallel creases one
-// edge apart (a chamfer) stay two creases. Requiring two aligned edges keeps a noisy flank's
-// one odd edge from vetoing its thinning.
+// (v, x) run along v's crease tangent (|cos| > 0.8) and have faces whose normals are more than
+// the crease angle apart (cosSharp), as the two ridge edges through a vertex of a crease line
+// do. Such a v is a ridge, not the flank of one: two parallel creases one edge apart (a
+// chamfer) stay two creases. Requiring two aligned edges keeps a noisy flank's one odd edge from
+// vetoing its thinning. Corners are not vetoed: on the noisy capped cylinder that kept flank
+// corners (F1 0.87 -> 0.71 at 10 % noise).
 inline bool OnSharpEdge(const SurfaceGraph& g, const std::vector<VertexResult>& res, int v, double cosSharp) {
   if (res[v].cls != VertexClass::Crease) return false;
   const Eigen::Vector3d T = ToVec(res[v].creaseTangent);
   int sharp = 0;
   for (int i = g.FaceBegin(v); i < g.FaceEnd(v); ++i) {
-    const int fa = g.vfList[i];
-    if (!(g.faceArea[fa] > 0)) continue;
-    for (int j = i + 1; j < g.FaceEnd(v); ++j) {
-      const int fb = g.vfList[j];
-      if (!(g.faceArea[fb] > 0)) continue;
-      int x = -1, shared = 0;  // the faces share the edge (v, x)
-      for (int a : g.face[fa])
-        for (int b : g.face[fb])
-          if (a == b) { ++shared; if (a != v) x = a; }
-      if (shared != 2 || x < 0 || !(g.faceNormal[fa].dot(g.faceNormal[fb]) < cosSharp)) continue;
-      if (!(std::abs((g.pos[x] - g.pos[v]).normalized().dot(T)) > 0.8)) continue;
-      if (++sharp >= 2) return true;
+    const int f = g.vfList[i];
+    if (!(g.faceArea[f] > 0)) continue;
+    for (int x : g.face[f]) {
+      if (x == v || !(std::abs((g.pos[x] - g.pos[v]).normalized().dot(T)) > 0.8)) continue;
+      const int third = g.face[f][0] + g.face[f][1] + g.face[f][2] - v - x;
+      g.ForEachFaceAcross(f, v, x, [&](int o) {  // each face pair once, from its lower face
+        const auto& t = g.face[o];
+        const bool duplicate = t[0] == third || t[1] == third || t[2] == third;  // f again: no edge neighbour
+        if (o > f && !duplicate && g.faceArea[o] > 0 && g.faceNormal[f].dot(g.faceNormal[o]) < cosSharp) ++sharp;
+      });
+      if (sharp >= 2) return true;
     }
   }
   return false;
@@ -106,16 +105,11 @@ inline double MedianEdgeAngle(const SurfaceGraph& g) {
   const int stride = std::max(1, g.FaceCount() / 100000);
   for (int f = 0; f < g.FaceCount(); f += stride) {
     if (!(g.faceArea[f] > 0)) continue;
-    for (int j = 0; j < 3; ++j) {
-      const int a = g.face[f][j], b = g.face[f][(j + 1) % 3];
-      for (int i = g.FaceBegin(a); i < g.FaceEnd(a); ++i) {
-        const int o = g.vfList[i];
-        if (o <= f || !(g.faceArea[o] > 0)) continue;  // each edge once, from its lower face
-        const auto& t = g.face[o];
-        if (t[0] != b && t[1] != b && t[2] != b) continue;
-        angles.push_back(float(std::acos(std::max(-1.0, std::min(1.0, g.faceNormal[f].dot(g.faceNormal[o]))))));
-      }
-    }
+    for (int j = 0; j < 3; ++j)
+      g.ForEachFaceAcross(f, g.face[f][j], g.face[f][(j + 1) % 3], [&](int o) {  // each edge once, from its lower face
+        if (o > f && g.faceArea[o] > 0)
+          angles.push_back(float(std::acos(std::max(-1.0, std::min(1.0, g.faceNormal[f].dot(g.faceNormal[o]))))));
+      });
   }
   if (angles.empty()) return 0;
   std::nth_element(angles.begin(), angles.begin() + angles.size() / 2, angles.end());

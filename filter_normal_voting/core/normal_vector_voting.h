@@ -109,10 +109,11 @@ inline double Seconds(std::chrono::steady_clock::time_point a) {
 
 enum class PassEnd { Done, Cancelled, OutOfMemory };
 
-// Runs body(v, scratch) for every vertex in parallel, one Scratch(g) per thread, in index order: consecutive
-// vertices of scanned and generated meshes are near each other, so consecutive marches reuse
-// what the last one brought into cache (a breadth-first order was measured too: 6 % faster on
-// one thread on the twice-subdivided blade, 8-33 % slower on every other run).
+// Runs body(v, scratch) for every vertex in parallel, one Scratch(g) per thread, in index
+// order: consecutive vertices of scanned and generated meshes are near each other, so
+// consecutive marches reuse what the last one brought into cache (a breadth-first order was
+// measured too: 6 % faster on one thread on the twice-subdivided blade, 8-33 % slower on every
+// other run).
 template <class Scratch, class Body>
 PassEnd ParallelOverVertices(const SurfaceGraph& g, int threads, PassProgress& progress, Body body) {
   const int n = g.VertexCount();

@@ -56,6 +56,17 @@ struct SurfaceGraph {
     return s;
   }
 
+  // Calls fn(o) for every face o != f that holds the edge (a, b) of face f: one on a manifold
+  // edge, none on a boundary, several on a non-manifold one.
+  template <class Fn>
+  void ForEachFaceAcross(int f, int a, int b, Fn fn) const {
+    for (int i = FaceBegin(a); i < FaceEnd(a); ++i) {
+      const int o = vfList[i];
+      const auto& t = face[o];
+      if (o != f && (t[0] == b || t[1] == b || t[2] == b)) fn(o);
+    }
+  }
+
   // Fills the graph from positions and faces given as vertex indices (-1 marks a face to skip).
   void Build(std::vector<Eigen::Vector3d>&& positions, std::vector<std::uint8_t>&& usableVertex,
              const std::vector<std::array<int, 3>>& rawFaces) {
