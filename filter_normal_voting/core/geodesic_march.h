@@ -34,6 +34,7 @@
 #include <limits>
 #include <vector>
 
+#include "huge_pages.h"
 #include "surface_graph.h"
 
 namespace nvv {
@@ -61,8 +62,9 @@ inline double UnfoldedDistanceFromLengths(double c, double b, double a, double d
 class GeodesicMarch {
  public:
   explicit GeodesicMarch(const SurfaceGraph& g)
-      : g_(g), dist_(g.VertexCount(), std::numeric_limits<double>::infinity()),
-        state_(g.VertexCount(), kFar), heapIndex_(g.VertexCount(), -1) {}
+      : g_(g), dist_(FilledOnHugePages(g.VertexCount(), std::numeric_limits<double>::infinity())),
+        state_(FilledOnHugePages<std::uint8_t>(g.VertexCount(), kFar)),
+        heapIndex_(FilledOnHugePages(g.VertexCount(), -1)) {}
 
   // Marches from `source` until the next vertex would be farther than `radius` or
   // `maxVertices` vertices are accepted. `blocked(v)` true: v may be accepted (it is reached)

@@ -31,19 +31,18 @@
 #include <memory>
 #include <string>
 #include <vector>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "ball_flood.h"
 #include "crease_curvature.h"
 #include "crease_thinning.h"
 #include "curvature_votes.h"
 #include "geodesic_march.h"
+#include "huge_pages.h"
 #include "normal_votes.h"
 #include "params.h"
 #include "sheet_fit.h"
 #include "surface_graph.h"
+#include "threads.h"
 #include "vertex_result.h"
 
 namespace nvv {
@@ -88,21 +87,6 @@ class PassProgress {
   std::chrono::steady_clock::time_point last_{};
 };
 
-inline int ThreadCount(int requested) {
-#ifdef _OPENMP
-  return requested > 0 ? requested : omp_get_max_threads();
-#else
-  (void)requested;
-  return 1;
-#endif
-}
-inline int ThreadId() {
-#ifdef _OPENMP
-  return omp_get_thread_num();
-#else
-  return 0;
-#endif
-}
 inline double Seconds(std::chrono::steady_clock::time_point a) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
 }
@@ -215,7 +199,8 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
                            "was used instead of the sign-aware one (creases above 120 degrees may be missed).");
 
   const int threads = ThreadCount(p.threads);
-  std::vector<VertexResult> out(g.VertexCount());
+  std::vector<VertexResult> out;
+  AssignOnHugePages(out, g.VertexCount());
 
   // Progress: pass 1 and each fit round of pass 2 get an equal share.
   const int rounds = p.fit == CurvatureFit::SheetQuadric ? p.fitRounds : 1;
@@ -244,7 +229,7 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
   auto notSurface = [&](int x) { return out[x].cls != VertexClass::Surface; };
   for (int round = 0; round < rounds; ++round) {
     const bool last = round == rounds - 1;
-    if (!last) fittedNormal.resize(g.VertexCount());
+    if (!last) AssignOnHugePages(fittedNormal, g.VertexCount());
     const std::string text = rounds == 1 ? std::string("Normal vector voting: curvature")
         : "Normal vector voting: curvature, fit " + std::to_string(round + 1) + " of " + std::to_string(rounds);
     PassProgress prog(cb, g.VertexCount(), share * (1 + round), last ? 100 : share * (2 + round), text.c_str());
@@ -361,7 +346,7 @@ class NormalVectorVoting {
   static nvv::Status Compute(const MeshType& m, const nvv::Params& p, std::vector<nvv::VertexResult>& res,
                              nvv::Summary& sum, const nvv::Progress& cb = nvv::Progress()) {
     nvv::SurfaceGraph g;
-    nvv::BuildSurfaceGraph(m, g);
+    nvv::BuildSurfaceGraph(m, g, p.threads);
     return nvv::RunNormalVectorVoting(g, p, res, sum, cb);
   }
 };

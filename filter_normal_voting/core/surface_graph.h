@@ -23,6 +23,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "huge_pages.h"
+#include "threads.h"
+
 namespace nvv {
 
 struct SurfaceGraph {
@@ -67,9 +70,12 @@ struct SurfaceGraph {
     }
   }
 
-  // Fills the graph from positions and faces given as vertex indices (-1 marks a face to skip).
+  // Fills the graph from positions and faces given as vertex indices (-1 marks a face to skip),
+  // on `threads` threads (<= 0: all). The per-face loops run in parallel; every sum is then
+  // taken serially in face order, so the graph is the same bits on any thread count.
   void Build(std::vector<Eigen::Vector3d>&& positions, std::vector<std::uint8_t>&& usableVertex,
-             const std::vector<std::array<int, 3>>& rawFaces) {
+             const std::vector<std::array<int, 3>>& rawFaces, int threads = 0) {
+    const int T = ThreadCount(threads);
     pos = std::move(positions);
     usable = std::move(usableVertex);
     const int n = static_cast<int>(pos.size());
@@ -81,7 +87,7 @@ struct SurfaceGraph {
       }
     }
     face.clear();
-    face.reserve(rawFaces.size());
+    ReserveOnHugePages(face, rawFaces.size());
     dropped = 0;
     for (const auto& f : rawFaces) {
       bool ok = f[0] != f[1] && f[1] != f[2] && f[0] != f[2];
@@ -90,47 +96,52 @@ struct SurfaceGraph {
       else ++dropped;
     }
     const int nf = FaceCount();
-    faceNormal.assign(nf, Eigen::Vector3d::Zero());
-    faceArea.assign(nf, 0.0);
-    faceEdge.resize(nf);
-    double edgeSum = 0;
+    AssignOnHugePages(faceNormal, nf, Eigen::Vector3d::Zero().eval());
+    AssignOnHugePages(faceArea, nf, 0.0);
+    AssignOnHugePages(faceEdge, nf);
+#pragma omp parallel for schedule(static) num_threads(T)
     for (int i = 0; i < nf; ++i) {
       const auto& f = face[i];
-      for (int j = 0; j < 3; ++j) {
-        faceEdge[i][j] = (pos[f[(j + 1) % 3]] - pos[f[j]]).norm();
-        edgeSum += faceEdge[i][j];
-      }
+      for (int j = 0; j < 3; ++j) faceEdge[i][j] = (pos[f[(j + 1) % 3]] - pos[f[j]]).norm();
     }
+    double edgeSum = 0;
+    for (int i = 0; i < nf; ++i)
+      for (int j = 0; j < 3; ++j) edgeSum += faceEdge[i][j];
     meanEdge = nf > 0 ? edgeSum / (3.0 * nf) : 0.0;
     // A face is degenerate when its area is negligible against l_ave^2 (scale-free test).
     const double areaFloor = 1e-12 * meanEdge * meanEdge;
-    maxArea = 0;
-    degenerate = 0;
+    double largest = 0;  // (a max and a count: the same on any thread count)
+    std::size_t zeroArea = 0;
+#pragma omp parallel for schedule(static) num_threads(T) reduction(max : largest) reduction(+ : zeroArea)
     for (int i = 0; i < nf; ++i) {
       const auto& f = face[i];
       const Eigen::Vector3d c = (pos[f[1]] - pos[f[0]]).cross(pos[f[2]] - pos[f[0]]);
       const double twiceArea = c.norm();
       if (!(twiceArea * 0.5 > areaFloor) || !std::isfinite(twiceArea)) {
-        ++degenerate;
+        ++zeroArea;
         continue;
       }
       faceNormal[i] = c / twiceArea;
       faceArea[i] = 0.5 * twiceArea;
-      maxArea = std::max(maxArea, faceArea[i]);
+      largest = std::max(largest, faceArea[i]);
     }
+    maxArea = largest;
+    degenerate = zeroArea;
     // Vertex -> face adjacency, counting sort into CSR.
-    vfStart.assign(n + 1, 0);
+    AssignOnHugePages(vfStart, n + 1, 0);
     for (const auto& f : face)
       for (int j = 0; j < 3; ++j) ++vfStart[f[j] + 1];
     for (int v = 0; v < n; ++v) vfStart[v + 1] += vfStart[v];
-    vfList.assign(vfStart[n], 0);
-    std::vector<int> fill(vfStart.begin(), vfStart.end() - 1);
+    AssignOnHugePages(vfList, vfStart[n], 0);
+    std::vector<int> fill;
+    ReserveOnHugePages(fill, n);
+    fill.assign(vfStart.begin(), vfStart.end() - 1);
     for (int i = 0; i < nf; ++i)
       for (int j = 0; j < 3; ++j) vfList[fill[face[i][j]]++] = i;
     unreferenced = 0;
     for (int v = 0; v < n; ++v)
       if (usable[v] && !Referenced(v)) ++unreferenced;
-    consistentlyOriented = CheckOrientation();
+    consistentlyOriented = CheckOrientation(T);
   }
 
  private:
@@ -140,7 +151,7 @@ struct SurfaceGraph {
   // allocation, several times faster on million-face meshes. A face using a -> b holds both a and
   // b, so only the faces of the endpoint with fewer faces are scanned: a 100,000-valence fan
   // vertex costs its neighbours' two faces per edge, not 100,000.
-  bool CheckOrientation() const {
+  bool CheckOrientation(int threads) const {
     // Number of faces that use the directed edge a -> b.
     auto uses = [this](int a, int b) {
       const int scan = vfStart[b + 1] - vfStart[b] < vfStart[a + 1] - vfStart[a] ? b : a;  // the endpoint with fewer faces
@@ -151,30 +162,35 @@ struct SurfaceGraph {
       }
       return count;
     };
-    for (const auto& f : face)
-      for (int j = 0; j < 3; ++j) {
-        const int a = f[j], b = f[(j + 1) % 3];
-        if (uses(a, b) >= 2 && uses(b, a) == 0) return false;
+    const int nf = FaceCount();
+    bool flipped = false;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : flipped)
+    for (int i = 0; i < nf; ++i)
+      for (int j = 0; j < 3 && !flipped; ++j) {
+        const int a = face[i][j], b = face[i][(j + 1) % 3];
+        flipped = uses(a, b) >= 2 && uses(b, a) == 0;
       }
-    return true;
+    return !flipped;
   }
 };
 
 // Builds the graph from any vcglib triangle mesh (vertex and face containers with
 // IsD(), cP(), cV(j)). Results elsewhere are indexed like m.vert, deleted slots included.
 template <class MeshType>
-void BuildSurfaceGraph(const MeshType& m, SurfaceGraph& g) {
-  const std::size_t n = m.vert.size();
-  std::vector<Eigen::Vector3d> positions(n);
+void BuildSurfaceGraph(const MeshType& m, SurfaceGraph& g, int threads = 0) {
+  const int T = ThreadCount(threads);
+  const std::ptrdiff_t n = std::ptrdiff_t(m.vert.size());
+  std::vector<Eigen::Vector3d> positions = FilledOnHugePages(std::size_t(n), Eigen::Vector3d::Zero().eval());
   std::vector<std::uint8_t> usable(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static) num_threads(T)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
     const auto& v = m.vert[i];
     if (v.IsD()) continue;
     positions[i] = Eigen::Vector3d(double(v.cP()[0]), double(v.cP()[1]), double(v.cP()[2]));
     usable[i] = 1;
   }
   std::vector<std::array<int, 3>> raw;
-  raw.reserve(m.face.size());
+  ReserveOnHugePages(raw, m.face.size());
   const auto* base = n > 0 ? &m.vert[0] : nullptr;
   for (const auto& f : m.face) {
     if (f.IsD()) continue;
@@ -183,12 +199,12 @@ void BuildSurfaceGraph(const MeshType& m, SurfaceGraph& g) {
       const auto* vp = f.cV(j);
       if (vp != nullptr && base != nullptr) {
         const std::ptrdiff_t idx = vp - base;
-        if (idx >= 0 && std::size_t(idx) < n) t[j] = int(idx);
+        if (idx >= 0 && idx < n) t[j] = int(idx);
       }
     }
     raw.push_back(t);
   }
-  g.Build(std::move(positions), std::move(usable), raw);
+  g.Build(std::move(positions), std::move(usable), raw, T);
 }
 
 }  // namespace nvv
