@@ -46,7 +46,9 @@ inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vec
   // more; the slope rows need six moments of degree <= 2 and six of the slopes. Accumulating
   // those 33 sums costs a third of the three 6x6 outer products per sample they replace (the
   // fit was the largest item of pass 2's profile); A and rhs are assembled once below.
-  double M[15] = {0}, Mh[6] = {0}, S[6] = {0}, T[6] = {0};
+  // S and T are the slope moments at unit row weight; Hh and Ss the squared targets, for the
+  // residuals below.
+  double M[15] = {0}, Mh[6] = {0}, S[6] = {0}, T[6] = {0}, Hh = 0, Ss = 0;
   const double sw2 = (slopeWeight / scale) * (slopeWeight / scale);
   int used = 0;
   for (const auto& s : samples) {
@@ -61,45 +63,73 @@ inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vec
     M[6] += wuu * u;  M[7] += wuu * v;  M[8] += wvv * u;  M[9] += wvv * v;
     M[10] += wuu * uu;  M[11] += wuu * uv;  M[12] += wuu * vv;  M[13] += wuv * vv;  M[14] += wvv * vv;
     const double wh = w * h;
+    Hh += wh * h;
     Mh[0] += wh * uu;  Mh[1] += wh * uv;  Mh[2] += wh * vv;  Mh[3] += wh * u;  Mh[4] += wh * v;  Mh[5] += wh;
     const double nh = F.n.dot(s.n);
     if (nh > 0.2) {  // a normal turned away from N (> 78 deg) says little about this sheet
-      const double ws = w * sw2, su = -F.e1.dot(s.n), sv = -F.e2.dot(s.n);
+      const double ws = w, su = -F.e1.dot(s.n), sv = -F.e2.dot(s.n);
+      Ss += ws * (su * su + sv * sv);
       S[0] += ws;  S[1] += ws * u;  S[2] += ws * v;  S[3] += ws * uu;  S[4] += ws * uv;  S[5] += ws * vv;
       const double wsu = ws * su, wsv = ws * sv;
       T[0] += wsu * u;  T[1] += wsu * v;  T[2] += wsv * u;  T[3] += wsv * v;  T[4] += wsu;  T[5] += wsv;
     }
     ++used;
   }
-  // Height rows: A(i, j) = sum w r_i r_j.
-  Mat6 A;
-  A << M[10], M[11], M[12], M[6], M[7], M[3],
+  // Height rows: Ah(i, j) = sum w r_i r_j.
+  Mat6 Ah, As;
+  Ah << M[10], M[11], M[12], M[6], M[7], M[3],
        M[11], M[12], M[13], M[7], M[8], M[4],
        M[12], M[13], M[14], M[8], M[9], M[5],
        M[6],  M[7],  M[8],  M[3], M[4], M[1],
        M[7],  M[8],  M[9],  M[4], M[5], M[2],
        M[3],  M[4],  M[5],  M[1], M[2], M[0];
-  // Slope rows r_u = (2u, w, 0, 1, 0, 0) and r_w = (0, u, 2w, 0, 1, 0): sum ws (r_u r_u' + r_w r_w').
-  A(0, 0) += 4 * S[3];
-  A(0, 1) += 2 * S[4];  A(1, 0) += 2 * S[4];
-  A(0, 3) += 2 * S[1];  A(3, 0) += 2 * S[1];
-  A(1, 1) += S[3] + S[5];
-  A(1, 2) += 2 * S[4];  A(2, 1) += 2 * S[4];
-  A(1, 3) += S[2];      A(3, 1) += S[2];
-  A(1, 4) += S[1];      A(4, 1) += S[1];
-  A(2, 2) += 4 * S[5];
-  A(2, 4) += 2 * S[2];  A(4, 2) += 2 * S[2];
-  A(3, 3) += S[0];
-  A(4, 4) += S[0];
-  Vec6 rhs;
-  rhs << Mh[0] + 2 * T[0], Mh[1] + T[1] + T[2], Mh[2] + 2 * T[3], Mh[3] + T[4], Mh[4] + T[5], Mh[5];
+  // Slope rows r_u = (2u, w, 0, 1, 0, 0) and r_w = (0, u, 2w, 0, 1, 0): As = sum w (r_u r_u' + r_w r_w').
+  As.setZero();
+  As(0, 0) = 4 * S[3];
+  As(0, 1) = As(1, 0) = 2 * S[4];
+  As(0, 3) = As(3, 0) = 2 * S[1];
+  As(1, 1) = S[3] + S[5];
+  As(1, 2) = As(2, 1) = 2 * S[4];
+  As(1, 3) = As(3, 1) = S[2];
+  As(1, 4) = As(4, 1) = S[1];
+  As(2, 2) = 4 * S[5];
+  As(2, 4) = As(4, 2) = 2 * S[2];
+  As(3, 3) = S[0];
+  As(4, 4) = S[0];
+  Vec6 bh, bs;
+  bh << Mh[0], Mh[1], Mh[2], Mh[3], Mh[4], Mh[5];
+  bs << 2 * T[0], T[1] + T[2], 2 * T[3], T[4], T[5], 0;
   if (used < 3) return pc;
   // Too few or collinear samples leave A (nearly) singular: refuse rather than fit noise. The
   // LDLT's reciprocal condition estimate does what a 6x6 eigen-decomposition did, for the cost
   // of the factorisation the solve needs anyway.
-  const Eigen::LDLT<Mat6> ldlt(A);
+  Eigen::LDLT<Mat6> ldlt(Ah + sw2 * As);
   if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-10)) return pc;
-  const Vec6 x = ldlt.solve(rhs);
+  Vec6 x = ldlt.solve(bh + sw2 * bs);
+  // sw2 weighs slope rows against height rows as if their variances were in a fixed ratio,
+  // right under noise. On a clean flat sheet next to a crease the heights are exact while the
+  // neighbours' voted normals lean towards the crease; there the slopes only pull the fit off.
+  // With ten samples or more, each kind of row is fitted alone, and where the heights' residual
+  // variance is below a tenth of sw2 times the slopes', the fit is solved again with the ratio of
+  // the two (a variance-component estimate).
+  if (used >= 10 && S[0] > 0) {
+    const Eigen::LDLT<Mat6> heights(Ah);
+    const Eigen::LDLT<Eigen::Matrix<double, 5, 5>> slopes(As.topLeftCorner<5, 5>());
+    if (heights.info() == Eigen::Success && heights.rcond() > 1e-10 && slopes.info() == Eigen::Success &&
+        slopes.rcond() > 1e-10) {
+      const Vec6 xh = heights.solve(bh);
+      Vec6 xs = Vec6::Zero();
+      xs.head<5>() = slopes.solve(bs.head<5>());
+      // Residual variances, corrected for the 6 and 5 coefficients each fit spends.
+      const double eh = std::max(0.0, Hh - 2 * xh.dot(bh) + xh.dot(Ah * xh)) / M[0] * used / (used - 6.0);
+      const double es = std::max(0.0, Ss - 2 * xs.dot(bs) + xs.dot(As * xs)) / (2 * S[0]) * (2.0 * used) / (2.0 * used - 5);
+      if (eh < 0.1 * sw2 * es) {
+        const double ratio = std::max(eh / es, 1e-9 * sw2);
+        const Eigen::LDLT<Mat6> again(Ah + ratio * As);
+        if (again.info() == Eigen::Success && again.rcond() > 1e-10) x = again.solve(bh + ratio * bs);
+      }
+    }
+  }
   const double d = x(3), e = x(4);
   Eigen::Matrix2d I, II;
   I << 1 + d * d, d * e, d * e, 1 + e * e;
