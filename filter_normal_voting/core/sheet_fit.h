@@ -36,6 +36,15 @@ struct SheetSample {
   Eigen::Vector3d n;  // its voted unit normal
 };
 
+// A cheap conditioning test of a factorisation that is only a shortcut's (the fit's own solve
+// uses the reciprocal condition estimate): its pivots within 1e12 of each other.
+template <class Ldlt>
+bool WellConditioned(const Ldlt& f) {
+  if (f.info() != Eigen::Success) return false;
+  const auto D = f.vectorD().cwiseAbs();
+  return D.minCoeff() > 1e-12 * D.maxCoeff();
+}
+
 inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vector<SheetSample>& samples,
                                            double scale, double slopeWeight, double cosPhi) {
   PrincipalCurvatures pc;
@@ -111,22 +120,31 @@ inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vec
   // neighbours' voted normals lean towards the crease; there the slopes only pull the fit off.
   // With ten samples or more, each kind of row is fitted alone, and where the heights' residual
   // variance is below a tenth of sw2 times the slopes', the fit is solved again with the ratio of
-  // the two (a variance-component estimate).
+  // the two (a variance-component estimate). The slopes' residual at the joint fit bounds their
+  // own fit's from above, so the slope-only fit is skipped where even that bound cannot trigger.
   if (used >= 10 && S[0] > 0) {
+    // Residual variances from the moments, corrected for the coefficients each fit spends.
+    auto heightVar = [&](const Vec6& c) {
+      return std::max(0.0, Hh - 2 * c.dot(bh) + c.dot(Ah * c)) / M[0] * used / (used - 6.0);
+    };
+    auto slopeVar = [&](const Vec6& c) {
+      return std::max(0.0, Ss - 2 * c.dot(bs) + c.dot(As * c)) / (2 * S[0]) * (2.0 * used) / (2.0 * used - 5);
+    };
     const Eigen::LDLT<Mat6> heights(Ah);
-    const Eigen::LDLT<Eigen::Matrix<double, 5, 5>> slopes(As.topLeftCorner<5, 5>());
-    if (heights.info() == Eigen::Success && heights.rcond() > 1e-10 && slopes.info() == Eigen::Success &&
-        slopes.rcond() > 1e-10) {
-      const Vec6 xh = heights.solve(bh);
-      Vec6 xs = Vec6::Zero();
-      xs.head<5>() = slopes.solve(bs.head<5>());
-      // Residual variances, corrected for the 6 and 5 coefficients each fit spends.
-      const double eh = std::max(0.0, Hh - 2 * xh.dot(bh) + xh.dot(Ah * xh)) / M[0] * used / (used - 6.0);
-      const double es = std::max(0.0, Ss - 2 * xs.dot(bs) + xs.dot(As * xs)) / (2 * S[0]) * (2.0 * used) / (2.0 * used - 5);
-      if (eh < 0.1 * sw2 * es) {
-        const double ratio = std::max(eh / es, 1e-9 * sw2);
-        const Eigen::LDLT<Mat6> again(Ah + ratio * As);
-        if (again.info() == Eigen::Success && again.rcond() > 1e-10) x = again.solve(bh + ratio * bs);
+    if (WellConditioned(heights)) {
+      const double eh = heightVar(heights.solve(bh));
+      if (eh < 0.1 * sw2 * slopeVar(x)) {
+        const Eigen::LDLT<Eigen::Matrix<double, 5, 5>> slopes(As.topLeftCorner<5, 5>());
+        if (WellConditioned(slopes)) {
+          Vec6 xs = Vec6::Zero();
+          xs.head<5>() = slopes.solve(bs.head<5>());
+          const double es = slopeVar(xs);
+          if (eh < 0.1 * sw2 * es) {
+            const double ratio = std::max(eh / es, 1e-9 * sw2);
+            const Eigen::LDLT<Mat6> again(Ah + ratio * As);
+            if (again.info() == Eigen::Success && again.rcond() > 1e-10) x = again.solve(bh + ratio * bs);
+          }
+        }
       }
     }
   }
