@@ -67,9 +67,9 @@ class PassProgress {
       : cb_(cb), n_(n), from_(percentFrom), to_(percentTo), text_(text) {}
   bool Cancelled() const { return cancelled_.load(std::memory_order_relaxed); }
   void Cancel() { cancelled_.store(true); }
-  // Called by each thread after each vertex.
-  void Tick(bool mainThread) {
-    const int done = done_.fetch_add(1, std::memory_order_relaxed) + 1;
+  // Called by each thread after every few vertices (`count` of them since its last call).
+  void Tick(bool mainThread, int count) {
+    const int done = done_.fetch_add(count, std::memory_order_relaxed) + count;
     if (!mainThread || !cb_) return;
     const auto now = std::chrono::steady_clock::now();
     if (now - last_ < std::chrono::milliseconds(100)) return;
@@ -107,12 +107,21 @@ PassEnd ParallelOverVertices(const SurfaceGraph& g, int threads, PassProgress& p
     try {
       Scratch scratch(g);
       const bool mainThread = ThreadId() == 0;
+      // Progress is counted in batches of kTickBatch vertices: one shared atomic add per vertex
+      // made the two threads fight over its cache line (and over the cancel flag's beside it)
+      // in passes where most vertices have nothing to do, such as the crease pass.
+      constexpr int kTickBatch = 16;
+      int pending = 0;
 #pragma omp for schedule(dynamic, 64)
       for (int v = 0; v < n; ++v) {
         if (progress.Cancelled() || failed.load(std::memory_order_relaxed)) continue;
         body(v, scratch);
-        progress.Tick(mainThread);
+        if (++pending == kTickBatch) {
+          progress.Tick(mainThread, pending);
+          pending = 0;
+        }
       }
+      if (pending > 0) progress.Tick(mainThread, pending);
     } catch (...) {  // bad_alloc: never let an exception cross the OpenMP region
       failed.store(true);
     }
