@@ -354,8 +354,10 @@ class NormalVectorVoting {
  public:
   static nvv::Status Compute(const MeshType& m, const nvv::Params& p, std::vector<nvv::VertexResult>& res,
                              nvv::Summary& sum, const nvv::Progress& cb = nvv::Progress()) {
+    // An absurd thread count is refused by the run below; until then the graph must not try it.
+    const int graphThreads = nvv::ValidateParams(p).empty() ? p.threads : 1;
     nvv::SurfaceGraph g;
-    nvv::BuildSurfaceGraph(m, g, p.threads);
+    nvv::BuildSurfaceGraph(m, g, graphThreads);
     return nvv::RunNormalVectorVoting(g, p, res, sum, cb);
   }
 };
