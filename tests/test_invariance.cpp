@@ -14,10 +14,6 @@ using nvv::VertexClass;
 
 namespace {
 
-void NoisySphere(TMesh& m) {
-  nvv_shapes::PaperSphere(m, 31, 0.5, 4);
-  nvv_shapes::AddNoise(m, 0.05 * nvv_shapes::MeanEdge(m), 3, nvv_shapes::AlongZ);
-}
 
 // Fraction of vertices whose class agrees, and the worst curvature / normal differences.
 struct Diff {

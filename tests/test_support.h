@@ -18,6 +18,12 @@
 
 namespace nvv_test {
 
+// The paper's sphere cap (R = 31 mm), jittered triangulation, 5 % noise along z.
+inline void NoisySphere(TMesh& m) {
+  nvv_shapes::PaperSphere(m, 31, 0.5, 4);
+  nvv_shapes::AddNoise(m, 0.05 * nvv_shapes::MeanEdge(m), 3, nvv_shapes::AlongZ);
+}
+
 inline Eigen::Vector3d E(const vcg::Point3d& p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
 inline Eigen::Vector3d E(const float* p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
 

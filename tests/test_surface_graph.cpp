@@ -37,11 +37,6 @@ void ExpectSameGraph(const nvv::SurfaceGraph& a, const nvv::SurfaceGraph& b) {
   EXPECT_EQ(a.unreferenced, b.unreferenced);
 }
 
-void NoisySphere(TMesh& m) {
-  nvv_shapes::PaperSphere(m, 31, 0.5, 4);
-  nvv_shapes::AddNoise(m, 0.05 * nvv_shapes::MeanEdge(m), 3, nvv_shapes::AlongZ);
-}
-
 }  // namespace
 
 TEST(SurfaceGraph, SameBitsOnOneAndTwoThreads) {
