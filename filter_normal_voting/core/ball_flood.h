@@ -26,7 +26,7 @@ namespace nvv {
 
 class BallFlood {
  public:
-  explicit BallFlood(const SurfaceGraph& g) : g_(g), stamp_(g.VertexCount(), 0u) {}
+  explicit BallFlood(const SurfaceGraph& g) : g_(g), stamp_(g.VertexCount(), 0) {}
 
   // Floods from `source` through vertices within `radius` of it, breadth first, until
   // `maxVertices` are reached. `blocked(v)` true: v is reached but the flood does not go on

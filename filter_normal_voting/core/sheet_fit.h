@@ -6,8 +6,8 @@
 // normal (n_u, n_w, n_h) gives three rows of a weighted least-squares problem for
 //   h(u, w) = a u^2 + b u w + c w^2 + d u + e w + f:
 //   height:  h(u_i, w_i)               = h_i
-//   slopes:  2 a u_i + b w_i + d       = -n_u   (row weight 2 l_ave)
-//            b u_i + 2 c w_i + e       = -n_w   (row weight 2 l_ave)
+//   slopes:  2 a u_i + b w_i + d       = -n_u   (row weight 2 l_ave, or less where the
+//            b u_i + 2 c w_i + e       = -n_w    heights alone fit far better: see below)
 // The slope targets are the normal's tangential components rather than the height field's
 // true slopes -n_u/n_h: on spheres and cylinders they are exactly linear in position, so a
 // quadratic fits them without the quartic bias a circle's height leaves in a quadratic
@@ -76,10 +76,10 @@ inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vec
     Mh[0] += wh * uu;  Mh[1] += wh * uv;  Mh[2] += wh * vv;  Mh[3] += wh * u;  Mh[4] += wh * v;  Mh[5] += wh;
     const double nh = F.n.dot(s.n);
     if (nh > 0.2) {  // a normal turned away from N (> 78 deg) says little about this sheet
-      const double ws = w, su = -F.e1.dot(s.n), sv = -F.e2.dot(s.n);
-      Ss += ws * (su * su + sv * sv);
-      S[0] += ws;  S[1] += ws * u;  S[2] += ws * v;  S[3] += ws * uu;  S[4] += ws * uv;  S[5] += ws * vv;
-      const double wsu = ws * su, wsv = ws * sv;
+      const double su = -F.e1.dot(s.n), sv = -F.e2.dot(s.n);
+      Ss += w * (su * su + sv * sv);
+      S[0] += w;  S[1] += wu;  S[2] += wv;  S[3] += wuu;  S[4] += wuv;  S[5] += wvv;
+      const double wsu = w * su, wsv = w * sv;
       T[0] += wsu * u;  T[1] += wsu * v;  T[2] += wsv * u;  T[3] += wsv * v;  T[4] += wsu;  T[5] += wsv;
     }
     ++used;
