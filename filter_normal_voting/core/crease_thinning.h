@@ -1,5 +1,14 @@
 // Thins pass 1's feature band to its ridge: non-maximum suppression across creases.
 //
+// Two forms. The default (Params::ridgeFit, ThinCreaseBandByRidgeFit) suppresses on the F
+// statistic of a two-plane fit to the vertices' heights (ridge_fit.h), and drops the band
+// vertices where that fit finds no kink of at least phi: on a 20 deg roof at 5 % noise with
+// phi = 10 deg, where the faces' normals scatter by more than phi and pass 1 marks nearly
+// every vertex, crease F1 went 0.35 -> 0.98 (docs/accuracy.md, "Levers measured"). The form
+// below suppresses on the strength of Eq. 7's covariance, which is what the rest of this
+// comment describes; the ridge-fit form keeps its corner rule, its 45 deg rule and its
+// sharp-edge veto.
+//
 // Every vertex within about g_m of a crease sees both sheets in its votes, so Eq. 10 marks a
 // band up to 2 k edges wide, not the crease line itself; and with a small crease angle (large
 // epsilon, which Eq. 10 also applies to corners) much of that band comes out CORNER, because
@@ -32,6 +41,7 @@
 #define NVV_CORE_CREASE_THINNING_H
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -116,6 +126,20 @@ inline double MedianEdgeAngle(const SurfaceGraph& g) {
   return angles[angles.size() / 2];
 }
 
+// Makes feature vertex v a SURFACE vertex whose normal restarts from its one-ring's; returns
+// 1, or 0 when v has no one-ring normal (then it stays as it is).
+inline int DemoteToSurface(const SurfaceGraph& g, VertexResult& r, int v) {
+  Eigen::Vector3d ring = g.RingNormalSum(v);
+  if (!(ring.squaredNorm() > 0)) return 0;
+  ring.normalize();
+  for (int j = 0; j < 3; ++j) r.normal[j] = float(ring[j]);
+  r.cls = VertexClass::Surface;
+  r.flags = std::uint8_t((r.flags & ~kCreaseValid) | kNormalValid);
+  for (int j = 0; j < 3; ++j) r.creaseTangent[j] = 0;
+  r.cuspAngle = 0;
+  return 1;
+}
+
 // Demotes every off-ridge crease or corner vertex to SURFACE. Returns how many were demoted.
 // An edge counts as sharp (OnSharpEdge) above the crease angle phi, or above five times the
 // mesh's median edge angle when that is larger: on a noisy mesh an edge between two faces
@@ -133,17 +157,95 @@ inline std::size_t ThinCreaseBand(const SurfaceGraph& g, std::vector<VertexResul
     if (IsFeature(res[v])) demote[v] = OffRidge(g, res, v) && !OnSharpEdge(g, res, v, cosSharp);
   std::size_t count = 0;
   for (int v = 0; v < n; ++v) {
-    if (!demote[v]) continue;
+    if (demote[v]) count += DemoteToSurface(g, res[v], v);
+  }
+  return count;
+}
+
+// Pass 1's feature vertex v as the ridge fit (ridge_fit.h) sees it.
+struct RidgeScore {
+  float F = 0;                                // the kink's F statistic; 0: not a ridge of angle >= phi
+  std::array<float, 3> tangent{{0, 0, 0}};   // the fitted ridge line
+  float alphaRad = 0;
+};
+
+// True when ridge candidate v is not the ridge of its band: a one-ring candidate across v's
+// fitted line (|cos| < 0.8, as OffRidge) whose own line is within 45 deg of v's has a larger F.
+inline bool OffFittedRidge(const SurfaceGraph& g, const std::vector<RidgeScore>& ridge, int v) {
+  const Eigen::Vector3d T = ToVec(ridge[v].tangent.data());
+  const float mine = ridge[v].F;
+  for (int i = g.FaceBegin(v); i < g.FaceEnd(v); ++i)
+    for (int u : g.face[g.vfList[i]]) {
+      if (u == v || !(ridge[u].F > 0)) continue;
+      const float theirs = ridge[u].F;
+      if (theirs < mine || (theirs == mine && u > v)) continue;
+      if (std::abs(ToVec(ridge[u].tangent.data()).dot(T)) < 0.7) continue;
+      const Eigen::Vector3d d = (g.pos[u] - g.pos[v]).normalized();
+      if (std::abs(d.dot(T)) < 0.8) return true;
+    }
+  return false;
+}
+
+// The ridge-fit form of ThinCreaseBand: a feature vertex stays one when its ridge fit found a
+// kink of at least phi (ridge[v].F > 0) and no candidate across its line has a larger F (or it
+// lies on a sharp mesh edge, as in ThinCreaseBand). A kept CORNER stays a corner when it is
+// the strongest feature of its one-ring (OffRidge); otherwise it becomes a CREASE along its
+// fitted line. Every kept CREASE takes the fitted line as its tangent.
+inline std::size_t ThinCreaseBandByRidgeFit(const SurfaceGraph& g, std::vector<VertexResult>& res,
+                                            const std::vector<RidgeScore>& ridge, int threads, double creaseAngleDeg) {
+  const int n = g.VertexCount();
+  const double sharpAngle = std::max(DegToRad(creaseAngleDeg), 5.0 * MedianEdgeAngle(g));
+  const double cosSharp = std::cos(std::min(sharpAngle, DegToRad(179.0)));
+  // 0 keep as is, 1 demote to surface, 2 corner to crease
+  std::vector<std::uint8_t> action(n, 0);
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (int v = 0; v < n; ++v) {
+    if (!IsFeature(res[v])) continue;
+    const bool ridgeHere = ridge[v].F > 0;
+    if (res[v].cls == VertexClass::Corner && ridgeHere && !OffRidge(g, res, v)) continue;  // stays a corner
+    const bool keep = (ridgeHere && !OffFittedRidge(g, ridge, v)) || OnSharpEdge(g, res, v, cosSharp);
+    if (!keep) action[v] = 1;
+    else if (res[v].cls == VertexClass::Corner) action[v] = ridgeHere ? 2 : 1;
+  }
+  // Where two fitted ridges meet (a cube's corner) the fit of the meeting vertex sees three
+  // sheets and loses to its neighbours: a demoted vertex that lies on the lines of two kept
+  // crease neighbours (the edge to each within 37 deg of its line) more than 45 deg apart is
+  // kept as a corner.
+  std::vector<std::uint8_t> corner(n, 0);
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (int v = 0; v < n; ++v) {
+    if (action[v] != 1) continue;
+    Eigen::Vector3d first = Eigen::Vector3d::Zero();
+    for (int i = g.FaceBegin(v); i < g.FaceEnd(v) && !corner[v]; ++i)
+      for (int u : g.face[g.vfList[i]]) {
+        if (u == v || action[u] == 1 || res[u].cls != VertexClass::Crease || !(ridge[u].F > 0)) continue;
+        const Eigen::Vector3d T = ToVec(ridge[u].tangent.data());
+        if (std::abs((g.pos[v] - g.pos[u]).normalized().dot(T)) < 0.8) continue;  // v is not on u's line
+        if (first.squaredNorm() == 0) first = T;
+        else if (std::abs(first.dot(T)) < 0.7) { corner[v] = 1; break; }
+      }
+  }
+  std::size_t count = 0;
+  for (int v = 0; v < n; ++v) {
     VertexResult& r = res[v];
-    Eigen::Vector3d ring = g.RingNormalSum(v);
-    if (!(ring.squaredNorm() > 0)) continue;
-    ring.normalize();
-    for (int j = 0; j < 3; ++j) r.normal[j] = float(ring[j]);
-    r.cls = VertexClass::Surface;
-    r.flags = std::uint8_t((r.flags & ~kCreaseValid) | kNormalValid);
-    for (int j = 0; j < 3; ++j) r.creaseTangent[j] = 0;
-    r.cuspAngle = 0;
-    ++count;
+    if (action[v] == 0 && r.cls == VertexClass::Crease && ridge[v].F > 0) {
+      for (int j = 0; j < 3; ++j) r.creaseTangent[j] = ridge[v].tangent[j];
+      continue;
+    }
+    if (action[v] == 2) {
+      r.cls = VertexClass::Crease;
+      r.flags |= kCreaseValid | kNormalValid;
+      for (int j = 0; j < 3; ++j) r.creaseTangent[j] = ridge[v].tangent[j];
+      r.cuspAngle = ridge[v].alphaRad;
+      continue;
+    }
+    if (action[v] != 1) continue;
+    if (corner[v]) {
+      r.cls = VertexClass::Corner;
+      r.flags = std::uint8_t(r.flags & ~(kCreaseValid | kNormalValid));
+      continue;
+    }
+    count += DemoteToSurface(g, r, v);
   }
   return count;
 }

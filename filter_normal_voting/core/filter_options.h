@@ -75,9 +75,9 @@ inline const std::vector<ParamSpec>& FilterParameterTable() {
      1.0, 0, 1, {}, {}, false},
     {"thin_creases", ParamType::Bool, "Thin crease bands to their ridge",
      "Pass 1 marks every vertex within about the radius of a crease as crease or corner. Keep only the "
-     "ridge of that band (the vertices where both sheets weigh equally) and treat the rest as surface, "
-     "so selections and colours show crease lines and those vertices get curvature. Off: the paper's "
-     "wide band.",
+     "ridge of that band (where a two-plane fit to the vertices' heights puts the crease line; found "
+     "on noisy meshes too) and treat the rest as surface, so selections and colours show crease lines "
+     "and those vertices get curvature. Off: the paper's wide band.",
      1.0, 0, 1, {}, {}, false},
     {"curvature_fit", ParamType::Enum, "Curvature estimator",
      "How the neighbourhood gives curvature. Crease-aware quadric: fits a quadratic patch to the "

@@ -15,7 +15,7 @@
 // On refusal or cancellation res is empty and the Status says why.
 //
 // Pass 1 (normal_votes.h) classifies every vertex and gives its normal, and crease bands are
-// thinned to their ridge (crease_thinning.h); pass 2 gives the curvature of SURFACE vertices
+// thinned to their ridge (crease_thinning.h, by default with the ridge fit of ridge_fit.h); pass 2 gives the curvature of SURFACE vertices
 // (sheet_fit.h, fitted Params::fitRounds times; or the paper's votes, curvature_votes.h) and of
 // CREASE lines (crease_curvature.h). Each pass is parallel over vertices (OpenMP); every vertex's result
 // depends only on pass-1 results and its own march, so any thread count gives the same bits.
@@ -40,6 +40,7 @@
 #include "huge_pages.h"
 #include "normal_votes.h"
 #include "params.h"
+#include "ridge_fit.h"
 #include "sheet_fit.h"
 #include "surface_graph.h"
 #include "threads.h"
@@ -158,6 +159,16 @@ struct Pass2Scratch {
   std::vector<SheetSample> samples;
 };
 
+struct RidgeScratch {
+  explicit RidgeScratch(const SurfaceGraph& g) : flood(g) {}
+  BallFlood flood;
+  std::vector<Eigen::Vector3d> xyz;
+};
+
+// The kink's F statistic a ridge must reach (ridge_fit.h): 3 standard deviations of a kink
+// that is only noise.
+constexpr double kRidgeMinF = 9.0;
+
 }  // namespace detail
 
 // Both passes on a prepared graph. Results are indexed like the graph's vertices.
@@ -223,7 +234,46 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
     });
     if (end != PassEnd::Done) return Unfinished(end);
   }
-  if (p.thinCreases) sum.thinned = ThinCreaseBand(g, out, threads, p.creaseAngleDeg);
+  if (p.thinCreases && p.ridgeFit) {
+    std::vector<RidgeScore> ridge;
+    AssignOnHugePages(ridge, g.VertexCount());
+    const double floorRss = 1e-12 * g.meanEdge * g.meanEdge;
+    const double phi = DegToRad(p.creaseAngleDeg);
+    // Two to three edge lengths: a smaller ball holds too few heights for the fit's four
+    // unknowns, and in a larger one a curved ridge (the capped cylinder's rims at k = 5) is no
+    // longer a straight line.
+    const double ridgeRadius = std::min(std::max(s1.radius, 2.0 * g.meanEdge), 3.0 * g.meanEdge);
+    PassProgress prog(cb, g.VertexCount(), share, share, "Normal vector voting: crease ridges");
+    const PassEnd end = ParallelOverVertices<RidgeScratch>(g, threads, prog, [&](int v, RidgeScratch& sc) {
+      if (!IsFeature(out[v])) return;
+      sc.flood.Run(v, ridgeRadius, s1.maxNeighbourhood);
+      // Two frames are fitted and the stronger kink kept: pass 1's normal, and the ball's mean
+      // normal (the bisector of a crease's two sheets; in the frame of one sheet's normal, which
+      // pass 1's E1 often is, the other sheet of a 90 deg crease is vertical).
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for (int x : sc.flood.Reached()) mean += g.RingNormalSum(x);
+      RidgeFitResult fit;
+      for (const Eigen::Vector3d& axis : {ToVec(out[v].normal), mean}) {
+        if (!(axis.squaredNorm() > 0)) continue;
+        const TangentFrame F(axis.normalized());
+        sc.xyz.clear();
+        for (int x : sc.flood.Reached()) {
+          const Eigen::Vector3d d = g.pos[x] - g.pos[v];
+          sc.xyz.emplace_back(F.e1.dot(d), F.e2.dot(d), F.n.dot(d));
+        }
+        const RidgeFitResult f = FitRidge(F, sc.xyz, floorRss * double(sc.xyz.size()));
+        if (f.ok && (!fit.ok || f.F > fit.F)) fit = f;
+      }
+      if (!fit.ok || fit.alphaRad < phi || fit.F < kRidgeMinF) return;
+      ridge[v].F = float(fit.F);
+      ridge[v].alphaRad = float(fit.alphaRad);
+      for (int j = 0; j < 3; ++j) ridge[v].tangent[j] = float(fit.tangent[j]);
+    });
+    if (end != PassEnd::Done) return Unfinished(end);
+    sum.thinned = ThinCreaseBandByRidgeFit(g, out, ridge, threads, p.creaseAngleDeg);
+  } else if (p.thinCreases) {
+    sum.thinned = ThinCreaseBand(g, out, threads, p.creaseAngleDeg);
+  }
   sum.secondsPass1 = Seconds(t0);
   const auto t1 = std::chrono::steady_clock::now();
 

@@ -43,6 +43,7 @@ struct Params {
   double cornerAngleDeg = 60.0; // psi: the same for the third direction (corners)
   bool stopAtCreases = true;    // pass 2 does not march through non-surface vertices (par. 6.5)
   bool thinCreases = true;      // keep only the ridge of each crease band (crease_thinning.h); paper: false
+  bool ridgeFit = true;         // thinCreases only: find the ridge by a two-plane fit (ridge_fit.h), not by Eq. 7's strength
   CurvatureFit fit = CurvatureFit::SheetQuadric;
   // SheetQuadric only: how many times pass 2 fits. Round 1 fits the voted normals of pass 1;
   // each further round fits again, in the frame of v's fitted normal, with the neighbours'
