@@ -153,6 +153,23 @@ for shape in dict.fromkeys(r["shape"] for r in f1):
     f1_lines.append("| %s | %s |" % (shape, " | ".join(cells)))
 goal_f1 = "\n".join(f1_lines)
 
+# The ridge fit lever: strength thinning -> ridge fit, k = 3, noisy cells.
+rl = ["| shape | 5 % | 10 % | 20 % |", "|---|---|---|---|"]
+for shape in dict.fromkeys(r["shape"] for r in f1):
+    cells = []
+    for n in ("5", "10", "20"):
+        a, b = f1i.get((shape, n, "NVV k=3 strength thinning")), f1i.get((shape, n, "NVV k=3"))
+        cells.append("–" if a is None or b is None else "%.2f → %.2f" % (a, b))
+    rl.append("| %s | %s |" % (shape, " | ".join(cells)))
+reali = {(r["mesh"], r["noise"], r["method"]): float(r["f1"]) for r in real}
+for mesh in dict.fromkeys(r["mesh"] for r in real):
+    cells = []
+    for n in ("5", "10"):
+        a, b = reali.get((mesh, n, "NVV k=3 strength thinning")), reali.get((mesh, n, "NVV k=3"))
+        cells.append("–" if a is None or b is None else "%.2f → %.2f" % (a, b))
+    rl.append("| %s (φ = 30°) | %s | – |" % (mesh, " | ".join(cells)))
+ridge_lever = "\n\n" + "\n".join(rl) + "\n"
+
 # ---- plots
 plt.rcParams.update({"font.size": 8})
 sel = {"3": ["NVV quadric (default) k=3", "NVV paper Taubin k=3", "NVV Euler LSQ k=3", "CGAL jet r=3 l_ave",
@@ -306,7 +323,7 @@ subst = {
     "HEAD_5_3": head_5_3, "HEAD_20_5": head_20_5, "NEAR_HEAD": near_head,
     "GRIDS_FULL": section("grids"), "VARIANTS_FULL": section("variants"), "F1_FULL": section("f1"),
     "NEAR_FULL": section("near"), "REAL": section("real"), "LEVERS": section("levers"),
-    "SECONDS": seconds,
+    "SECONDS": seconds, "RIDGE_LEVER": ridge_lever,
 }
 for k, v in subst.items():
     text = text.replace("{{" + k + "}}", v)

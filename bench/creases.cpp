@@ -24,9 +24,10 @@ void CalibrateSigns(std::vector<Estimator>& ests);
 
 namespace {
 
-std::vector<char> NvvFeatures(const TMesh& m, double k, double phi, bool thin = true) {
+std::vector<char> NvvFeatures(const TMesh& m, double k, double phi, bool thin = true, bool ridgeFit = true) {
   nvv::Params p = nvv_test::WithK(k);
   p.thinCreases = thin;
+  p.ridgeFit = ridgeFit;
   p.creaseAngleDeg = std::max(1.0, std::min(89.0, phi));
   const nvv_test::NvvRun r = nvv_test::RunNvv(m, p);
   std::vector<char> f(m.vert.size(), 0);
@@ -48,13 +49,15 @@ std::vector<CreaseShape> Shapes(bool all) {
 int RunF1(const std::string& outDir) {
   const std::vector<double> noises = {0, 0.01, 0.05, 0.10, 0.20};
   Csv csv(outDir, "creases_f1.csv", "shape,alpha,noise,method,precision,recall,f1");
-  std::printf("| shape | noise | NVV k=1 | NVV k=3 | NVV k=5 | NVV k=3 paper band | MeshLab dihedral | CGAL sharp edges |\n"
-              "|---|---|---|---|---|---|---|---|\n");
-  const char* names[] = {"NVV k=1", "NVV k=3", "NVV k=5", "NVV k=3 paper band", "MeshLab dihedral", "CGAL sharp edges"};
+  std::printf("| shape | noise | NVV k=1 | NVV k=3 | NVV k=5 | NVV k=3 strength thinning | NVV k=3 paper band | MeshLab dihedral | CGAL sharp edges |\n"
+              "|---|---|---|---|---|---|---|---|---|\n");
+  const char* names[] = {"NVV k=1", "NVV k=3", "NVV k=5", "NVV k=3 strength thinning", "NVV k=3 paper band",
+                         "MeshLab dihedral", "CGAL sharp edges"};
+  const int methods = 7;
   for (const CreaseShape& s : Shapes(true))
     for (double noise : noises) {
       std::vector<char> truthAll, useAll;
-      std::vector<std::vector<char>> foundAll(6);
+      std::vector<std::vector<char>> foundAll(methods);
       for (unsigned seed = 1; seed <= 2; ++seed) {
         TMesh m;
         BuildCreaseShape(s, m);
@@ -68,14 +71,14 @@ int RunF1(const std::string& outDir) {
         const double phi = s.alphaDeg / 2;
         Context c(m);
         std::vector<std::vector<char>> found = {NvvFeatures(m, 1, phi), NvvFeatures(m, 3, phi), NvvFeatures(m, 5, phi),
-                                                NvvFeatures(m, 3, phi, false),
+                                                NvvFeatures(m, 3, phi, true, false), NvvFeatures(m, 3, phi, false),
                                                 DihedralCreaseVertices(m, phi), CgalSharpVertices(c.plain, phi)};
         truthAll.insert(truthAll.end(), truth.begin(), truth.end());
         useAll.insert(useAll.end(), use.begin(), use.end());
-        for (int j = 0; j < 6; ++j) foundAll[j].insert(foundAll[j].end(), found[j].begin(), found[j].end());
+        for (int j = 0; j < methods; ++j) foundAll[j].insert(foundAll[j].end(), found[j].begin(), found[j].end());
       }
       std::printf("| %s | %g %% |", s.name.c_str(), noise * 100);
-      for (int j = 0; j < 6; ++j) {
+      for (int j = 0; j < methods; ++j) {
         const F1 f = ScoreFeatures(foundAll[j], truthAll, useAll);
         std::printf(" %.2f (%.2f / %.2f) |", f.f1, f.precision, f.recall);
         std::fprintf(csv.f(), "%s,%g,%g,%s,%g,%g,%g\n", s.name.c_str(), s.alphaDeg, noise * 100, names[j], f.precision,

@@ -85,10 +85,11 @@ std::vector<char> TruthFromFea(const std::string& path, std::size_t n) {
   return t;
 }
 
-std::vector<unsigned char> NvvClasses(const TMesh& m, double k, double phi, bool thin = true) {
+std::vector<unsigned char> NvvClasses(const TMesh& m, double k, double phi, bool thin = true, bool ridgeFit = true) {
   nvv::Params p = nvv_test::WithK(k);
   p.creaseAngleDeg = phi;
   p.thinCreases = thin;
+  p.ridgeFit = ridgeFit;
   const nvv_test::NvvRun r = nvv_test::RunNvv(m, p);
   std::vector<unsigned char> c(m.vert.size(), 3);
   for (std::size_t i = 0; i < r.res.size(); ++i) c[i] = static_cast<unsigned char>(r.res[i].cls);
@@ -106,14 +107,16 @@ int RunReal(const std::string& outDir) {
   const std::string dir = std::string(NVV_SHARED_MESHES) + "/real/";
   const double phi = 30;
   const std::vector<double> noises = {0, 0.001, 0.01, 0.05, 0.10};
-  const char* names[] = {"NVV k=1", "NVV k=3", "NVV k=5", "NVV k=3 paper band", "MeshLab dihedral", "CGAL sharp edges"};
+  const char* names[] = {"NVV k=1", "NVV k=3", "NVV k=5", "NVV k=3 strength thinning", "NVV k=3 paper band",
+                         "MeshLab dihedral", "CGAL sharp edges"};
+  const int methods = 7;
   Csv csv(outDir, "real_f1.csv", "mesh,noise,method,precision,recall,f1");
-  std::printf("| mesh | noise | NVV k=1 | NVV k=3 | NVV k=5 | NVV k=3 paper band | MeshLab dihedral | CGAL sharp edges |\n"
-              "|---|---|---|---|---|---|---|---|\n");
+  std::printf("| mesh | noise | NVV k=1 | NVV k=3 | NVV k=5 | NVV k=3 strength thinning | NVV k=3 paper band | MeshLab dihedral | CGAL sharp edges |\n"
+              "|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string name : {"fandisk.off", "abc_00000006.obj"}) {
     TMesh clean;
     if (!LoadMesh(dir + name, clean)) {
-      std::printf("| %s | – | not found under %s | | | | |\n", name.c_str(), dir.c_str());
+      std::printf("| %s | – | not found under %s | | | | | |\n", name.c_str(), dir.c_str());
       continue;
     }
     const bool fan = name == "fandisk.off";
@@ -128,10 +131,11 @@ int RunReal(const std::string& outDir) {
       Context c(m);
       std::vector<std::vector<unsigned char>> cls = {NvvClasses(m, 1, phi), NvvClasses(m, 3, phi), NvvClasses(m, 5, phi)};
       std::vector<std::vector<char>> found = {IsFeature(cls[0]), IsFeature(cls[1]), IsFeature(cls[2]),
+                                              IsFeature(NvvClasses(m, 3, phi, true, false)),
                                               IsFeature(NvvClasses(m, 3, phi, false)),
                                               DihedralCreaseVertices(m, phi), CgalSharpVertices(c.plain, phi)};
       std::printf("| %s | %g %% |", name.c_str(), noise * 100);
-      for (int j = 0; j < 6; ++j) {
+      for (int j = 0; j < methods; ++j) {
         const F1 f = ScoreFeatures(found[j], truth, use);
         std::printf(" %.2f (%.2f / %.2f) |", f.f1, f.precision, f.recall);
         std::fprintf(csv.f(), "%s,%g,%s,%g,%g,%g\n", name.c_str(), noise * 100, names[j], f.precision, f.recall, f.f1);
@@ -143,7 +147,7 @@ int RunReal(const std::string& outDir) {
         Csv pts(outDir, "fandisk_" + tag + "_vertices.csv", "x,y,z,truth,nvv_k1,nvv_k3,nvv_k5,dihedral,cgal");
         for (std::size_t i = 0; i < m.vert.size(); ++i)
           std::fprintf(pts.f(), "%g,%g,%g,%d,%d,%d,%d,%d,%d\n", m.vert[i].cP()[0], m.vert[i].cP()[1], m.vert[i].cP()[2],
-                       truth[i], cls[0][i], cls[1][i], cls[2][i], found[4][i], found[5][i]);
+                       truth[i], cls[0][i], cls[1][i], cls[2][i], found[5][i], found[6][i]);
         Csv fs(outDir, "fandisk_faces.csv", "a,b,c");
         for (const auto& f : c.plain.face) std::fprintf(fs.f(), "%d,%d,%d\n", f[0], f[1], f[2]);
       }
