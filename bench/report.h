@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -38,7 +39,11 @@ class Csv {
  public:
   Csv(const std::string& dir, const std::string& name, const std::string& header)
       : f_(std::fopen((dir + "/" + name).c_str(), "w")) {
-    if (f_) std::fprintf(f_, "%s\n", header.c_str());
+    if (!f_) {  // every section writes its rows unchecked: stop here, not in a null FILE*
+      std::fprintf(stderr, "cannot write %s/%s (does the output folder exist?)\n", dir.c_str(), name.c_str());
+      std::exit(2);
+    }
+    std::fprintf(f_, "%s\n", header.c_str());
   }
   ~Csv() { if (f_) std::fclose(f_); }
   FILE* f() { return f_; }
