@@ -154,20 +154,18 @@ for shape in dict.fromkeys(r["shape"] for r in f1):
 goal_f1 = "\n".join(f1_lines)
 
 # The ridge fit lever: strength thinning -> ridge fit, k = 3, noisy cells.
+def lever_cells(index, name, noises):
+    cells = []
+    for n in noises:
+        a, b = index.get((name, n, "NVV k=3 strength thinning")), index.get((name, n, "NVV k=3"))
+        cells.append("–" if a is None or b is None else "%.2f → %.2f" % (a, b))
+    return " | ".join(cells)
 rl = ["| shape | 5 % | 10 % | 20 % |", "|---|---|---|---|"]
 for shape in dict.fromkeys(r["shape"] for r in f1):
-    cells = []
-    for n in ("5", "10", "20"):
-        a, b = f1i.get((shape, n, "NVV k=3 strength thinning")), f1i.get((shape, n, "NVV k=3"))
-        cells.append("–" if a is None or b is None else "%.2f → %.2f" % (a, b))
-    rl.append("| %s | %s |" % (shape, " | ".join(cells)))
+    rl.append("| %s | %s |" % (shape, lever_cells(f1i, shape, ("5", "10", "20"))))
 reali = {(r["mesh"], r["noise"], r["method"]): float(r["f1"]) for r in real}
 for mesh in dict.fromkeys(r["mesh"] for r in real):
-    cells = []
-    for n in ("5", "10"):
-        a, b = reali.get((mesh, n, "NVV k=3 strength thinning")), reali.get((mesh, n, "NVV k=3"))
-        cells.append("–" if a is None or b is None else "%.2f → %.2f" % (a, b))
-    rl.append("| %s (φ = 30°) | %s | – |" % (mesh, " | ".join(cells)))
+    rl.append("| %s (φ = 30°) | %s | – |" % (mesh, lever_cells(reali, mesh, ("5", "10"))))
 ridge_lever = "\n\n" + "\n".join(rl) + "\n"
 
 # ---- plots

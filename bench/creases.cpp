@@ -53,7 +53,7 @@ int RunF1(const std::string& outDir) {
               "|---|---|---|---|---|---|---|---|---|\n");
   const char* names[] = {"NVV k=1", "NVV k=3", "NVV k=5", "NVV k=3 strength thinning", "NVV k=3 paper band",
                          "MeshLab dihedral", "CGAL sharp edges"};
-  const int methods = 7;
+  const int methods = int(sizeof(names) / sizeof(names[0]));
   for (const CreaseShape& s : Shapes(true))
     for (double noise : noises) {
       std::vector<char> truthAll, useAll;

@@ -109,7 +109,7 @@ int RunReal(const std::string& outDir) {
   const std::vector<double> noises = {0, 0.001, 0.01, 0.05, 0.10};
   const char* names[] = {"NVV k=1", "NVV k=3", "NVV k=5", "NVV k=3 strength thinning", "NVV k=3 paper band",
                          "MeshLab dihedral", "CGAL sharp edges"};
-  const int methods = 7;
+  const int methods = int(sizeof(names) / sizeof(names[0]));
   Csv csv(outDir, "real_f1.csv", "mesh,noise,method,precision,recall,f1");
   std::printf("| mesh | noise | NVV k=1 | NVV k=3 | NVV k=5 | NVV k=3 strength thinning | NVV k=3 paper band | MeshLab dihedral | CGAL sharp edges |\n"
               "|---|---|---|---|---|---|---|---|---|\n");

@@ -1,6 +1,7 @@
 // A ridge (two-plane) fit at one vertex: is there a crease through v, and along which line?
 //
-// In the frame (e1, e2, n) of v's voted normal, with every neighbour q of the ball M_v at
+// In a frame (e1, e2, n) at v (the caller's: normal_vector_voting.h tries pass 1's normal and the
+// ball's mean normal), with every neighbour q of the ball M_v at
 // (x, y, z) = (q - v) in that frame, and a line through v along t = cos(theta) e1 + sin(theta) e2
 // with w = -x sin(theta) + y cos(theta) the signed distance across it:
 //
@@ -123,7 +124,7 @@ inline RidgeFitResult FitRidge(const TangentFrame& F, const std::vector<Eigen::V
   const double rss1 = m.Residual(bestTheta, &beta);
   if (rss1 < 0) return out;
   const double c = std::cos(bestTheta), s = std::sin(bestTheta);
-  // The sheets' slopes at v: the gradient of the quadric at 0 plus or minus the kink across.
+  // The sheets' slopes at v: the plane's gradient plus or minus the kink across the line.
   const Eigen::Vector2d across(-s, c), grad(beta(1), beta(2));
   const double kink = beta(kRidgeBasis);
   const Eigen::Vector2d gp = grad + kink * across, gm = grad - kink * across;
