@@ -145,3 +145,42 @@ TEST(Pass1Classes, RidgeFitFindsAShallowNoisyRoof) {
     if (fit.res[i].cls == VertexClass::Crease && std::abs(m.vert[i].cP()[0]) < 0.5 && std::abs(m.vert[i].cP()[1]) < 12)
       EXPECT_GT(std::abs(E(fit.res[i].creaseTangent).y()), 0.9);
 }
+
+// CloseCreaseGaps on a clean 90 deg roof whose ridge row (x = 0) is marked by hand: a single
+// missing ridge vertex is closed along the line, nothing beside the line or beyond its ends is.
+TEST(CreaseGaps, OneMissingRidgeVertexIsClosedAndNothingElse) {
+  TMesh m;
+  nvv_shapes::Roof(m, 90.0);
+  nvv::SurfaceGraph g;
+  nvv::BuildSurfaceGraph(m, g);
+  const int n = g.VertexCount();
+  std::vector<nvv::VertexResult> res(n);
+  std::vector<nvv::RidgeScore> ridge(n);
+  int gap = -1;
+  std::vector<int> row;
+  for (int v = 0; v < n; ++v) {
+    res[v].cls = VertexClass::Surface;
+    const auto& P = m.vert[v].cP();
+    if (std::abs(P[0]) > 1e-9 || std::abs(P[1]) > 8) continue;  // the line ends at |y| = 8
+    row.push_back(v);
+    if (std::abs(P[1]) < 1e-9) { gap = v; continue; }
+    res[v].cls = VertexClass::Crease;
+    ridge[v].F = 20;
+    ridge[v].alphaRad = float(nvv::DegToRad(90));
+    ridge[v].tangent = {{0, 1, 0}};
+  }
+  ASSERT_GE(gap, 0);
+  ASSERT_GT(row.size(), 10u);
+  const std::vector<nvv::VertexResult> before = res;
+  EXPECT_EQ(1u, nvv::CloseCreaseGaps(g, res, ridge, 2));
+  EXPECT_EQ(VertexClass::Crease, res[gap].cls);
+  EXPECT_GT(std::abs(E(res[gap].creaseTangent).y()), 0.99);
+  EXPECT_NEAR(nvv::DegToRad(90), res[gap].cuspAngle, 1e-6);
+  for (int v = 0; v < n; ++v)
+    if (v != gap) EXPECT_EQ(before[v].cls, res[v].cls) << "vertex " << v;
+  // A second gap next to the first is two vertices wide: left open.
+  res = before;
+  for (int v : row)
+    if (std::abs(m.vert[v].cP()[1] - 1) < 1e-9) res[v].cls = VertexClass::Surface, ridge[v].F = 0;
+  EXPECT_EQ(0u, nvv::CloseCreaseGaps(g, res, ridge, 2));
+}
