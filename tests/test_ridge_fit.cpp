@@ -2,6 +2,7 @@
 // shallow noisy roof's known ridge.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 
 #include "test_support.h"
@@ -183,4 +184,43 @@ TEST(CreaseGaps, OneMissingRidgeVertexIsClosedAndNothingElse) {
   for (int v : row)
     if (std::abs(m.vert[v].cP()[1] - 1) < 1e-9) res[v].cls = VertexClass::Surface, ridge[v].F = 0;
   EXPECT_EQ(0u, nvv::CloseCreaseGaps(g, res, ridge, 2));
+}
+
+// A 120 deg roof (sheets 16 mm wide, 1 mm apart along them) with 20 % noise along the normals and
+// the crease angle at 60 deg: the ridge row's mesh edges are sharp and kept whatever their F,
+// and the noise makes fits one row off the ridge significant too. Those flanks are dropped (a
+// sharp-edge crease across their line).
+TEST(Pass1Classes, NoisyObtuseRoofKeepsItsRidgeAndNotItsFlanks) {
+  int ridge = 0, found = 0, off = 0, corners = 0;
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    TMesh m;
+    nvv_shapes::Roof(m, 120.0, 33, 16 * std::cos(nvv::DegToRad(60)), 32);
+    std::vector<double> x0;  // before the noise
+    for (const auto& v : m.vert) x0.push_back(v.cP()[0]);
+    const double half = nvv::DegToRad(60);
+    nvv_shapes::AddNoise(m, 0.2 * nvv_shapes::MeanEdge(m), seed, [&](const vcg::Point3d& p) {
+      return vcg::Point3d(p[0] > 0 ? std::sin(half) : p[0] < 0 ? -std::sin(half) : 0, 0,
+                          p[0] == 0 ? 1 : std::cos(half));
+    });
+    nvv::Params p = WithK(3.0);
+    p.creaseAngleDeg = 60;
+    const NvvRun r = RunNvv(m, p);
+    ASSERT_TRUE(r.st.ok);
+    for (std::size_t i = 0; i < m.vert.size(); ++i) {
+      const auto& P = m.vert[i].cP();
+      if (std::abs(P[1]) > 12 || std::abs(x0[i]) > 6) continue;
+      corners += r.res[i].cls == VertexClass::Corner;
+      if (std::abs(x0[i]) < 0.1) {
+        ++ridge;
+        found += nvv::IsFeature(r.res[i]);
+      } else {
+        off += nvv::IsFeature(r.res[i]);
+      }
+    }
+  }
+  std::printf("[roof 120, 20 %% noise] ridge %d, found %d, off-ridge features %d, corners %d\n", ridge, found, off, corners);
+  ASSERT_GT(ridge, 60);
+  EXPECT_GE(found, int(0.9 * ridge));
+  EXPECT_LE(off, ridge / 6);  // the previous rules kept about 0.4 per ridge vertex here
+  EXPECT_LE(corners, 2 * 3);  // a handful where noise makes a corner of the ridge line
 }

@@ -205,7 +205,7 @@ inline std::string SummaryLine(const Summary& s) {
   char buf[512];
   std::snprintf(buf, sizeof buf,
                 "Normal vector voting: %zu surface, %zu crease, %zu corner, %zu unclassified vertices "
-                "(%zu off-ridge band vertices made surface); "
+                "(%zu band vertices thinned off the ridges); "
                 "k1 in [%.4g, %.4g], k2 in [%.4g, %.4g]; radius %.4g (mean edge %.4g), epsilon %.3g, eta %.3g; "
                 "%.2f s (pass 1 %.2f s, pass 2 %.2f s)",
                 s.perClass[0], s.perClass[1], s.perClass[2], s.perClass[3], s.thinned, s.k1Min, s.k1Max, s.k2Min, s.k2Max,

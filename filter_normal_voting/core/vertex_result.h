@@ -58,7 +58,7 @@ struct Summary {
   std::size_t vertices = 0;         // size of the vertex container (results are indexed by it)
   std::size_t perClass[4] = {0, 0, 0, 0};
   std::size_t capped = 0;           // vertices whose march hit the neighbourhood cap
-  std::size_t thinned = 0;          // crease-band vertices off the ridge, made surface (crease_thinning.h)
+  std::size_t thinned = 0;          // feature vertices thinning removed: band vertices made surface, less gap vertices made creases (crease_thinning.h)
   std::size_t nonFiniteVertices = 0;
   std::size_t unreferencedVertices = 0;
   std::size_t degenerateFaces = 0;  // zero-area faces: used for distances, not for votes

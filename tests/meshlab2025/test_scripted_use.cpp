@@ -291,7 +291,8 @@ TEST(ScriptedUse, EveryParameterIsHonoured) {
     EXPECT_EQ(Count(r.cls, crease) + Count(r.cls, corner), Count(r.selected));
   });
   check("thin_creases", 0, [&](const RunResult& r) {
-    // Thinning only turns band vertices into surface ones, so the difference is what it thinned.
+    // thinned_vertices is net (band vertices made surface, less one-vertex gaps closed into
+    // creases), so the difference is what it thinned.
     // At 30 deg the CAD part's band is wide (at the default 60 deg it is one vertex wide already).
     const RunResult thin = RunFilter({{"crease_angle", 30}});
     const int thinned = thin.dict.at("thinned_vertices").toInt();
