@@ -16,9 +16,10 @@
 //
 // Pass 1 (normal_votes.h) classifies every vertex and gives its normal, and crease bands are
 // thinned to their ridge (crease_thinning.h, by default with the ridge fit of ridge_fit.h);
-// pass 2 gives the curvature of SURFACE vertices (sheet_fit.h, fitted Params::fitRounds times; or the paper's votes, curvature_votes.h) and of
-// CREASE lines (crease_curvature.h). Each pass is parallel over vertices (OpenMP); every vertex's result
-// depends only on pass-1 results and its own march, so any thread count gives the same bits.
+// pass 2 gives the curvature of SURFACE vertices (sheet_fit.h, fitted Params::fitRounds times;
+// or the paper's votes, curvature_votes.h) and of CREASE lines (crease_curvature.h). Each pass is
+// parallel over vertices (OpenMP); every vertex's result depends only on pass-1 results and its
+// own march, so any thread count gives the same bits.
 #ifndef NVV_CORE_NORMAL_VECTOR_VOTING_H
 #define NVV_CORE_NORMAL_VECTOR_VOTING_H
 
