@@ -311,11 +311,12 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
                                               : flood.Run(v, s1.radius, s1.maxNeighbourhood);
         if (!complete) r.flags |= kNeighbourhoodCapped;
         sc.samples.clear();
+        bool reachesCrease = false;
         for (int x : flood.Reached()) {
-          if (out[x].cls != VertexClass::Surface) continue;
+          if (out[x].cls != VertexClass::Surface) { reachesCrease = true; continue; }
           sc.samples.push_back({g.pos[x] - g.pos[v], normalOf(x)});
         }
-        pc = SheetQuadricFit(F, sc.samples, s1.radius, slopeWeight, cosPhi);
+        pc = SheetQuadricFit(F, sc.samples, s1.radius, slopeWeight, cosPhi, p.cubicFit && !reachesCrease);
         if (!last) {  // hand the fitted normal (or, if the fit failed, this round's) to the next round
           const Eigen::Vector3d n = pc.ok ? pc.normal : Nv;
           for (int j = 0; j < 3; ++j) fittedNormal[v][j] = float(n[j]);

@@ -19,6 +19,10 @@
 // second II = [[2a, b], [b, 2c]] / sqrt(1+d^2+e^2); principal curvatures are the
 // generalised eigenvalues of (II, I) with the sign flipped, so that a sphere with outward
 // normals has +1/R (h = -(u^2+w^2)/(2R) there).
+// Where the neighbourhood reaches no crease, a cubic height field (four more terms, the same
+// rows) replaces the quadratic when an F test finds its extra terms significant: on a clean
+// torus the quadratic's slope rows absorb the cubic terms and tilt the normal (0.4 deg at k = 3).
+// The quadratic's coefficients of the cubic are read at the origin just the same.
 #ifndef NVV_CORE_SHEET_FIT_H
 #define NVV_CORE_SHEET_FIT_H
 
@@ -45,76 +49,124 @@ bool WellConditioned(const Ldlt& f) {
   return D.minCoeff() > 1e-12 * D.maxCoeff();
 }
 
-inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vector<SheetSample>& samples,
-                                           double scale, double slopeWeight, double cosPhi) {
-  PrincipalCurvatures pc;
-  typedef Eigen::Matrix<double, 6, 6> Mat6;
-  typedef Eigen::Matrix<double, 6, 1> Vec6;
-  // The normal equations are sums of monomials in (u, w): with the height row
-  // r = (u^2, uw, w^2, u, w, 1), sum w_i r r' needs the 15 moments of degree <= 4, sum w_i h r six
-  // more; the slope rows need six moments of degree <= 2 and six of the slopes. Accumulating
-  // those 33 sums costs a third of the three 6x6 outer products per sample they replace (the
-  // fit was the largest item of pass 2's profile); A and rhs are assembled once below.
-  // S and T are the slope moments at unit row weight; Hh and Ss the squared targets, for the
-  // residuals below.
-  double M[15] = {0}, Mh[6] = {0}, S[6] = {0}, T[6] = {0}, Hh = 0, Ss = 0;
-  const double sw2 = (slopeWeight / scale) * (slopeWeight / scale);
-  int used = 0;
-  for (const auto& s : samples) {
-    const double agree = (F.n.dot(s.n) - cosPhi) / (1.0 - cosPhi);
-    if (!(agree > 0)) continue;
-    const double w = std::min(1.0, agree) * std::min(1.0, agree);
-    // Coordinates scaled by 1/scale keep the 6x6 system well conditioned at any mesh scale.
-    const double u = F.e1.dot(s.d) / scale, v = F.e2.dot(s.d) / scale, h = F.n.dot(s.d) / scale;
-    const double uu = u * u, uv = u * v, vv = v * v;
-    const double wu = w * u, wv = w * v, wuu = w * uu, wuv = w * uv, wvv = w * vv;
-    M[0] += w;  M[1] += wu;  M[2] += wv;  M[3] += wuu;  M[4] += wuv;  M[5] += wvv;
-    M[6] += wuu * u;  M[7] += wuu * v;  M[8] += wvv * u;  M[9] += wvv * v;
-    M[10] += wuu * uu;  M[11] += wuu * uv;  M[12] += wuu * vv;  M[13] += wuv * vv;  M[14] += wvv * vv;
-    const double wh = w * h;
-    Hh += wh * h;
-    Mh[0] += wh * uu;  Mh[1] += wh * uv;  Mh[2] += wh * vv;  Mh[3] += wh * u;  Mh[4] += wh * v;  Mh[5] += wh;
-    const double nh = F.n.dot(s.n);
-    if (nh > 0.2) {  // a normal turned away from N (> 78 deg) says little about this sheet
-      const double su = -F.e1.dot(s.n), sv = -F.e2.dot(s.n);
+// Sums of monomials over the weighted samples, from which the normal equations of a height
+// field of degree D (2: quadratic, 3: cubic) are assembled. With the basis r (below) and
+// h(u, w) = c'r, the height rows need sum w r r' (moments of degree <= 2D) and sum w h r; the slope
+// rows, r_u = dr/du and r_w = dr/dw, need moments of degree <= 2D - 2 and the slopes' moments of
+// degree <= D - 1. Accumulating them per sample costs far less than the outer products they
+// replace (the fit was the largest item of pass 2's profile); A and rhs are assembled once.
+template <int D>
+struct SheetMoments {
+  double M[2 * D + 1][2 * D + 1] = {};  // sum w u^p w^q, p + q <= 2D
+  double Mh[D + 1][D + 1] = {};         // sum w h u^p w^q, p + q <= D
+  // Slope rows' moments are M's over the samples whose normal gives slopes; the few that do not
+  // are summed here instead and subtracted (Cut), which saves a second set of sums per sample.
+  double S[2 * D - 1][2 * D - 1] = {};
+  double Tu[D][D] = {}, Tw[D][D] = {};  // sum w s_u u^p w^q and sum w s_w u^p w^q, p + q <= D - 1
+  double Hh = 0, Ss = 0;                // squared targets, for the residuals
+  int used = 0, withSlopes = 0;
+
+  void Add(double w, double u, double v, double h, bool slopes, double su, double sv) {
+    double pu[2 * D + 1], pv[2 * D + 1];
+    pu[0] = w;
+    pv[0] = 1;
+    for (int i = 1; i <= 2 * D; ++i) { pu[i] = pu[i - 1] * u; pv[i] = pv[i - 1] * v; }
+    for (int a = 0; a <= 2 * D; ++a)
+      for (int b = 0; a + b <= 2 * D; ++b) M[a][b] += pu[a] * pv[b];
+    const double hh = h;
+    for (int a = 0; a <= D; ++a)
+      for (int b = 0; a + b <= D; ++b) Mh[a][b] += hh * pu[a] * pv[b];
+    Hh += w * h * h;
+    if (slopes) {
+      ++withSlopes;
       Ss += w * (su * su + sv * sv);
-      S[0] += w;  S[1] += wu;  S[2] += wv;  S[3] += wuu;  S[4] += wuv;  S[5] += wvv;
-      const double wsu = w * su, wsv = w * sv;
-      T[0] += wsu * u;  T[1] += wsu * v;  T[2] += wsv * u;  T[3] += wsv * v;  T[4] += wsu;  T[5] += wsv;
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; a + b < D; ++b) { Tu[a][b] += su * pu[a] * pv[b]; Tw[a][b] += sv * pu[a] * pv[b]; }
+    } else {
+      for (int a = 0; a <= 2 * D - 2; ++a)
+        for (int b = 0; a + b <= 2 * D - 2; ++b) S[a][b] += pu[a] * pv[b];
     }
     ++used;
   }
-  // Height rows: Ah(i, j) = sum w r_i r_j.
-  Mat6 Ah, As;
-  Ah << M[10], M[11], M[12], M[6], M[7], M[3],
-       M[11], M[12], M[13], M[7], M[8], M[4],
-       M[12], M[13], M[14], M[8], M[9], M[5],
-       M[6],  M[7],  M[8],  M[3], M[4], M[1],
-       M[7],  M[8],  M[9],  M[4], M[5], M[2],
-       M[3],  M[4],  M[5],  M[1], M[2], M[0];
-  // Slope rows r_u = (2u, w, 0, 1, 0, 0) and r_w = (0, u, 2w, 0, 1, 0): As = sum w (r_u r_u' + r_w r_w').
-  As.setZero();
-  As(0, 0) = 4 * S[3];
-  As(0, 1) = As(1, 0) = 2 * S[4];
-  As(0, 3) = As(3, 0) = 2 * S[1];
-  As(1, 1) = S[3] + S[5];
-  As(1, 2) = As(2, 1) = 2 * S[4];
-  As(1, 3) = As(3, 1) = S[2];
-  As(1, 4) = As(4, 1) = S[1];
-  As(2, 2) = 4 * S[5];
-  As(2, 4) = As(4, 2) = 2 * S[2];
-  As(3, 3) = S[0];
-  As(4, 4) = S[0];
-  Vec6 bh, bs;
-  bh << Mh[0], Mh[1], Mh[2], Mh[3], Mh[4], Mh[5];
-  bs << 2 * T[0], T[1] + T[2], 2 * T[3], T[4], T[5], 0;
+  void Cut() {
+    for (int a = 0; a <= 2 * D - 2; ++a)
+      for (int b = 0; a + b <= 2 * D - 2; ++b) S[a][b] = withSlopes ? M[a][b] - S[a][b] : 0.0;
+  }
+};
+
+// Basis of the height field, quadratic part first: r = (u^2, uw, w^2, u, w, 1, u^3, u^2 w, u w^2, w^3);
+// monomial i is u^kPu[i] w^kPw[i].
+constexpr int kPu[10] = {2, 1, 0, 1, 0, 0, 3, 2, 1, 0};
+constexpr int kPw[10] = {0, 1, 2, 0, 1, 0, 0, 1, 2, 3};
+
+// The cubic fit replaces the quadratic where its four extra coefficients are significant:
+// F = ((RSS_2 - RSS_3) / 4) / (RSS_3 / (rows - 10)) > kCubicSignificance, both residuals on the joint
+// (height and slope) rows. On a torus the quadratic's slopes absorb the cubic terms (normal bias
+// 0.4 deg at k = 3, 1.2 deg at k = 5, clean); docs/accuracy.md gives the thresholds measured.
+constexpr double kCubicSignificance = 10.0;
+
+// D = 2: no cubic terms to add.
+inline void CubicIfSignificant(const Eigen::Matrix<double, 6, 6>&, const Eigen::Matrix<double, 6, 1>&,
+                               const Eigen::LDLT<Eigen::Matrix<double, 6, 6>>&, double, double,
+                               Eigen::Matrix<double, 6, 1>&) {}
+
+// Given the quadratic's minimiser x of |rows|^2 (system A22 x = b2, factorised), adds the cubic
+// terms where they are significant, by block elimination rather than a 10 x 10 solve: with the
+// Schur complement S = A33 - A32 A22^-1 A23 and the gradient g = b3 - A32 x, the cubic's
+// coefficients are c3 = S^-1 g, its quadratic part x - A22^-1 A23 c3, and the residual drops by
+// g'c3. `yy` is the targets' weighted square sum, `rows` the number of rows.
+inline void CubicIfSignificant(const Eigen::Matrix<double, 10, 10>& A, const Eigen::Matrix<double, 10, 1>& b,
+                               const Eigen::LDLT<Eigen::Matrix<double, 6, 6>>& quadratic, double yy, double rows,
+                               Eigen::Matrix<double, 6, 1>& x) {
+  const Eigen::Matrix<double, 6, 4> A23 = A.topRightCorner<6, 4>();
+  const Eigen::Matrix<double, 6, 4> Z = quadratic.solve(A23);
+  const Eigen::Matrix4d S = A.bottomRightCorner<4, 4>() - A23.transpose() * Z;
+  const Eigen::Vector4d g = b.tail<4>() - A23.transpose() * x;
+  const Eigen::LDLT<Eigen::Matrix4d> schur(S);
+  if (!schur.isPositive() || !WellConditioned(schur)) return;
+  const Eigen::Vector4d c3 = schur.solve(g);
+  const double drop = g.dot(c3);
+  const double rssQuadratic = std::max(0.0, yy - x.dot(b.head<6>()));
+  const double rssCubic = std::max(1e-300, rssQuadratic - drop);
+  if (drop / 4 > kCubicSignificance * rssCubic / (rows - 10)) x -= Z * c3;
+}
+
+template <int D>
+PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& m, double scale, double sw2) {
+  PrincipalCurvatures pc;
+  typedef Eigen::Matrix<double, 6, 6> Mat6;
+  typedef Eigen::Matrix<double, 6, 1> Vec6;
+  constexpr int N = (D + 1) * (D + 2) / 2;
+  typedef Eigen::Matrix<double, N, N> MatN;
+  typedef Eigen::Matrix<double, N, 1> VecN;
+  m.Cut();
+  // Height rows: Ah(i, j) = sum w r_i r_j. Slope rows: As = sum w (r_u r_u' + r_w r_w'), with
+  // d(u^a w^b)/du = a u^(a-1) w^b; bs = sum w (s_u r_u + s_w r_w).
+  MatN AhN, AsN;
+  VecN bhN, bsN;
+  for (int i = 0; i < N; ++i) {
+    const int ai = kPu[i], bi = kPw[i];
+    bhN(i) = m.Mh[ai][bi];
+    bsN(i) = (ai ? ai * m.Tu[ai - 1][bi] : 0.0) + (bi ? bi * m.Tw[ai][bi - 1] : 0.0);
+    for (int j = 0; j < N; ++j) {
+      const int aj = kPu[j], bj = kPw[j];
+      AhN(i, j) = m.M[ai + aj][bi + bj];
+      AsN(i, j) = (ai * aj ? ai * aj * m.S[ai + aj - 2][bi + bj] : 0.0) +
+                  (bi * bj ? bi * bj * m.S[ai + aj][bi + bj - 2] : 0.0);
+    }
+  }
+  const Mat6 Ah = AhN.template topLeftCorner<6, 6>(), As = AsN.template topLeftCorner<6, 6>();
+  const Vec6 bh = bhN.template head<6>(), bs = bsN.template head<6>();
+  const int used = m.used;
+  const double Hh = m.Hh, Ss = m.Ss, M0 = m.M[0][0], S0 = m.S[0][0];  // S0 > 0 where withSlopes > 0
   if (used < 3) return pc;
   // Too few or collinear samples leave A (nearly) singular: refuse rather than fit noise. The
   // LDLT's reciprocal condition estimate does what a 6x6 eigen-decomposition did, for the cost
   // of the factorisation the solve needs anyway.
-  Eigen::LDLT<Mat6> ldlt(Ah + sw2 * As);
+  Eigen::LDLT<Mat6> ldlt(Ah + sw2 * As);  // the factorisation of the final quadratic's system
   if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-10)) return pc;
   Vec6 x = ldlt.solve(bh + sw2 * bs);
+  double lambda = sw2;  // the slope rows' weight the final quadratic used
   // sw2 weighs slope rows against height rows as if their variances were in a fixed ratio,
   // right under noise. On a clean flat sheet next to a crease the heights are exact while the
   // neighbours' voted normals lean towards the crease; there the slopes only pull the fit off.
@@ -122,13 +174,13 @@ inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vec
   // variance is below a tenth of sw2 times the slopes', the fit is solved again with the ratio of
   // the two (a variance-component estimate). The slopes' residual at the joint fit bounds their
   // own fit's from above, so the slope-only fit is skipped where even that bound cannot trigger.
-  if (used >= 10 && S[0] > 0) {
+  if (used >= 10 && m.withSlopes > 0) {
     // Residual variances from the moments, corrected for the coefficients each fit spends.
     auto heightVar = [&](const Vec6& c) {
-      return std::max(0.0, Hh - 2 * c.dot(bh) + c.dot(Ah * c)) / M[0] * used / (used - 6.0);
+      return std::max(0.0, Hh - 2 * c.dot(bh) + c.dot(Ah * c)) / M0 * used / (used - 6.0);
     };
     auto slopeVar = [&](const Vec6& c) {
-      return std::max(0.0, Ss - 2 * c.dot(bs) + c.dot(As * c)) / (2 * S[0]) * (2.0 * used) / (2.0 * used - 5);
+      return std::max(0.0, Ss - 2 * c.dot(bs) + c.dot(As * c)) / (2 * S0) * (2.0 * used) / (2.0 * used - 5);
     };
     const Eigen::LDLT<Mat6> heights(Ah);
     if (WellConditioned(heights)) {
@@ -142,12 +194,20 @@ inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vec
           if (eh < 0.1 * sw2 * es) {
             const double ratio = std::max(eh / es, 1e-9 * sw2);
             const Eigen::LDLT<Mat6> again(Ah + ratio * As);
-            if (again.info() == Eigen::Success && again.rcond() > 1e-10) x = again.solve(bh + ratio * bs);
+            if (again.info() == Eigen::Success && again.rcond() > 1e-10) {
+              x = again.solve(bh + ratio * bs);
+              lambda = ratio;
+              ldlt = again;
+            }
           }
         }
       }
     }
   }
+  // The cubic, with the same row weights, where it fits significantly better (kCubicSignificance).
+  if (D == 3 && used >= 12)
+    CubicIfSignificant(MatN(AhN + lambda * AsN), VecN(bhN + lambda * bsN), ldlt, Hh + lambda * Ss,
+                       used + 2.0 * m.withSlopes, x);
   const double d = x(3), e = x(4);
   Eigen::Matrix2d I, II;
   I << 1 + d * d, d * e, d * e, 1 + e * e;
@@ -165,6 +225,33 @@ inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vec
   pc.t2 = pc.normal.cross(pc.t1);
   pc.ok = std::isfinite(pc.k1) && std::isfinite(pc.k2) && pc.t1.allFinite();
   return pc;
+}
+
+// The fit of v's same-sheet samples. `cubic`: a cubic may replace the quadratic where it is
+// significant (the caller allows it only where the neighbourhood reaches no crease: there the
+// samples are one-sided and the cubic's extrapolation to v is unstable).
+template <int D>
+PrincipalCurvatures SheetFitOfDegree(const TangentFrame& F, const std::vector<SheetSample>& samples, double scale,
+                                     double sw2, double cosPhi) {
+  SheetMoments<D> m;
+  for (const auto& s : samples) {
+    const double agree = (F.n.dot(s.n) - cosPhi) / (1.0 - cosPhi);
+    if (!(agree > 0)) continue;
+    const double w = std::min(1.0, agree) * std::min(1.0, agree);
+    // Coordinates scaled by 1/scale keep the system well conditioned at any mesh scale.
+    const double u = F.e1.dot(s.d) / scale, v = F.e2.dot(s.d) / scale, h = F.n.dot(s.d) / scale;
+    // A normal turned away from N (> 78 deg) says little about this sheet's slopes.
+    const bool slopes = F.n.dot(s.n) > 0.2;
+    m.Add(w, u, v, h, slopes, slopes ? -F.e1.dot(s.n) : 0.0, slopes ? -F.e2.dot(s.n) : 0.0);
+  }
+  return SheetFitFromMoments<D>(F, m, scale, sw2);
+}
+
+inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vector<SheetSample>& samples,
+                                           double scale, double slopeWeight, double cosPhi, bool cubic = false) {
+  const double sw2 = (slopeWeight / scale) * (slopeWeight / scale);
+  return cubic && samples.size() >= 12 ? SheetFitOfDegree<3>(F, samples, scale, sw2, cosPhi)
+                                       : SheetFitOfDegree<2>(F, samples, scale, sw2, cosPhi);
 }
 
 }  // namespace nvv
