@@ -19,6 +19,7 @@ TEST(FilterOptions, TableDefaultsAreTheCoreDefaults) {
   EXPECT_EQ(p.stopAtCreases, o.core.stopAtCreases);
   EXPECT_EQ(p.fit, o.core.fit);
   EXPECT_EQ(p.fitRounds, o.core.fitRounds);
+  EXPECT_EQ(p.cubicFit, o.core.cubicFit);
   EXPECT_EQ(p.thinCreases, o.core.thinCreases);
   EXPECT_EQ(p.classRule, o.core.classRule);
   EXPECT_EQ(p.maxNeighbourhood, o.core.maxNeighbourhood);

@@ -91,6 +91,12 @@ inline const std::vector<ParamSpec>& FilterParameterTable() {
      "fits again with the first fit's normals, which halves the direction and curvature error on noisy "
      "smooth surfaces for about 50 % more time; 3-4 rarely add more.",
      2.0, 1, 4, {}, {}, true},
+    {"cubic_fit", ParamType::Bool, "Cubic where significant",
+     "Crease-aware quadric fit only: where a neighbourhood reaches no crease, fit a cubic patch instead "
+     "when its extra terms are statistically significant. Removes the normal tilt a quadratic leaves "
+     "on surfaces whose curvature varies (tori, fillets, free-form scans) at large neighbourhoods; "
+     "costs about a third more time in the fit. Off: always the quadratic.",
+     1.0, 0, 1, {}, {}, true},
     {"class_rule", ParamType::Enum, "Classification rule",
      "Sign-aware: orders the vote matrix's eigenvectors by the oriented mean vote, so sharp edges "
      "above 90 deg (knife edges, fins, blade edges) are found. Paper: the original eigenvalue order, "
@@ -183,6 +189,7 @@ inline std::string SetOption(FilterOptions& o, const std::string& name, double v
   else if (name == "thin_creases") o.core.thinCreases = value != 0;
   else if (name == "curvature_fit") o.core.fit = CurvatureFit(iv);
   else if (name == "fit_rounds") o.core.fitRounds = iv;
+  else if (name == "cubic_fit") o.core.cubicFit = value != 0;
   else if (name == "class_rule") o.core.classRule = ClassRule(iv);
   else if (name == "update_normals") o.updateNormals = value != 0;
   else if (name == "quality") o.quality = QualityMode(iv);
@@ -203,6 +210,7 @@ inline double GetOption(const FilterOptions& o, const std::string& name) {
   if (name == "thin_creases") return o.core.thinCreases ? 1 : 0;
   if (name == "curvature_fit") return int(o.core.fit);
   if (name == "fit_rounds") return o.core.fitRounds;
+  if (name == "cubic_fit") return o.core.cubicFit ? 1 : 0;
   if (name == "class_rule") return int(o.core.classRule);
   if (name == "update_normals") return o.updateNormals ? 1 : 0;
   if (name == "quality") return int(o.quality);

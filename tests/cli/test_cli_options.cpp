@@ -76,6 +76,7 @@ std::vector<OptionCase> Cases() {
     {"thin_creases", {"--crease_angle", "30", "--thin_creases", "false"}, {"--crease_angle", "30"},
      [](O& o) { o.core.creaseAngleDeg = 30; o.core.thinCreases = false; }, true},
     {"fit_rounds", {"--fit_rounds", "1"}, {}, [](O& o) { o.core.fitRounds = 1; }, true},
+    {"cubic_fit", {"--cubic_fit", "false"}, {}, [](O& o) { o.core.cubicFit = false; }, true},
     {"class_rule", {"--class_rule", "paper"}, {}, [](O& o) { o.core.classRule = nvv::ClassRule::PaperOrder; }, true},
     {"update_normals", {"--update_normals", "false"}, {}, [](O& o) { o.updateNormals = false; }, true},
     {"quality_gaussian", {"--quality", "gaussian"}, {}, [](O& o) { o.quality = nvv::QualityMode::GaussianCurvature; }, true},

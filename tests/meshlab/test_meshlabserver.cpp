@@ -166,6 +166,7 @@ TEST(MeshLabServer, EveryParameterIsHonoured) {
     EXPECT_GT(CountColour(m, red) + CountColour(m, blue), CountColour(*thin, red) + CountColour(*thin, blue) + 100);
   }, {{"crease_angle", "30"}});
   check("fit_rounds", "1", [&](const MMesh& m, const ServerRun&) { EXPECT_GT(MaxQualityDiff(base, m), 1e-3); });
+  check("cubic_fit", "false", [&](const MMesh& m, const ServerRun&) { EXPECT_GT(MaxQualityDiff(base, m), 1e-3); });
   check("max_neighbourhood", "16", [&](const MMesh& m, const ServerRun& r) {
     EXPECT_GT(MaxQualityDiff(base, m), 1e-3);
     EXPECT_NE(std::string::npos, r.output.find("neighbourhood cap")) << r.output;

@@ -301,6 +301,7 @@ TEST(ScriptedUse, EveryParameterIsHonoured) {
     EXPECT_EQ(0, r.dict.at("thinned_vertices").toInt());
   }, {{"crease_angle", 30}});
   check("fit_rounds", 1, [&](const RunResult& r) { EXPECT_GT(MaxQualityDiff(base, r), 1e-3); });
+  check("cubic_fit", 0, [&](const RunResult& r) { EXPECT_GT(MaxQualityDiff(base, r), 1e-3); });
   check("max_neighbourhood", 16, [&](const RunResult& r) {
     EXPECT_GT(MaxQualityDiff(base, r), 1e-3);
     EXPECT_GT(r.dict.at("capped_vertices").toInt(), 0);
