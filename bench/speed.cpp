@@ -29,7 +29,7 @@
 // different builds of the core) can be checked to give the same bits.
 //
 // Usage: nvv_bench_speed [SHARED_MESHES_DIR] [--quick | --full] [--only NAME-SUBSTRING] [--ours-only]
-//                        [--fit_rounds N]   (the core's default otherwise)
+//                        [--fit_rounds N] [--cubic_fit 0|1]   (the core's defaults otherwise)
 #ifdef NVV_SPEED_CGAL_PART
 // CGAL's estimator, compiled in its own translation unit (this file built a second time with
 // NVV_SPEED_CGAL_PART): CGAL's build flags (-frounding-math) must not reach our core, and CGAL
@@ -205,10 +205,12 @@ struct Run {
   std::uint64_t hash = 0;
 };
 int gFitRounds = nvv::Params().fitRounds;  // --fit_rounds N
+bool gCubicFit = nvv::Params().cubicFit;    // --cubic_fit 0|1
 Run RunNvv(const BMesh& m, double k, int threads) {
   nvv::Params p;
   p.k = k;
   p.fitRounds = gFitRounds;
+  p.cubicFit = gCubicFit;
   p.threads = threads;
   std::vector<nvv::VertexResult> res;
   nvv::Summary sum;
@@ -303,16 +305,17 @@ int main(int argc, char** argv) {
     else if (a == "--only" && i + 1 < argc) only = argv[++i];
     else if (a == "--ours-only") others = false;
     else if (a == "--fit_rounds" && i + 1 < argc) gFitRounds = std::atoi(argv[++i]);
+    else if (a == "--cubic_fit" && i + 1 < argc) gCubicFit = std::atoi(argv[++i]) != 0;
     else if (a[0] != '-') shared = a;
-    else { std::fprintf(stderr, "usage: %s [SHARED_MESHES_DIR] [--quick | --full] [--only NAME] [--ours-only] [--fit_rounds N]\n", argv[0]); return 2; }
+    else { std::fprintf(stderr, "usage: %s [SHARED_MESHES_DIR] [--quick | --full] [--only NAME] [--ours-only] [--fit_rounds N] [--cubic_fit 0|1]\n", argv[0]); return 2; }
   }
   int allThreads = 1;
 #ifdef _OPENMP
   allThreads = omp_get_max_threads();
 #endif
-  std::printf("%ld cores online, OpenMP threads available: %d; quadric fit rounds: %d; plan: %s\n\n",
+  std::printf("%ld cores online, OpenMP threads available: %d; quadric fit rounds: %d; cubic where significant: %s; plan: %s\n\n",
               sysconf(_SC_NPROCESSORS_ONLN),
-              allThreads, gFitRounds, quick ? "quick" : full ? "full" : "default");
+              allThreads, gFitRounds, gCubicFit ? "on" : "off", quick ? "quick" : full ? "full" : "default");
 
   const int T = allThreads;
   std::vector<std::pair<double, int>> every;
