@@ -22,7 +22,10 @@
 // Where the neighbourhood reaches no crease, a cubic height field (four more terms, the same
 // rows) replaces the quadratic when an F test finds its extra terms significant: on a clean
 // torus the quadratic's slope rows absorb the cubic terms and tilt the normal (0.4 deg at k = 3).
-// The quadratic's coefficients of the cubic are read at the origin just the same.
+// The quadratic's coefficients of the cubic are read at the origin just the same. There, too,
+// the second-order terms come from the slope rows wherever these fit far better than the
+// heights (the shape operator is the normal's derivative, and normals are exactly linear on
+// spheres and cylinders and already averaged under noise); the normal stays the heights'.
 #ifndef NVV_CORE_SHEET_FIT_H
 #define NVV_CORE_SHEET_FIT_H
 
