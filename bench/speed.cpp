@@ -9,7 +9,8 @@
 // the normals, seeded) and a generated torus of ~1 M vertices (near-equilateral grid, same noise).
 //
 // The full matrix (4 meshes x k = 1, 3, 5, 8 x threads 1, 2) takes over an hour on two cores, so
-// the default plan (about 20 minutes) measures what the questions need (`plan` in main):
+// the default plan (about 10 minutes) measures what the speed goals need (docs/performance.md;
+// `plan` in main):
 //   - time vs k: every k on the blade (both thread counts) and on the torus (all cores);
 //   - time vs n: k = 3, one thread, on the blade and its two subdivisions (same surface);
 //   - speed-up: k = 3 on one thread and on all cores, on every mesh;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Speed and memory benchmark of Normal Vector Voting against MeshLab's (vcglib) and CGAL's
-# curvature estimators on large meshes (issue 5).
+# curvature estimators on large meshes.
 #
 #   bash scripts/run-speed-bench.sh [--quick | --full] [extra nvv_bench_speed options]
 #
