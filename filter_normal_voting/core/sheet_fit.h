@@ -166,8 +166,16 @@ PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& 
   // Too few or collinear samples leave A (nearly) singular: refuse rather than fit noise. The
   // LDLT's reciprocal condition estimate does what a 6x6 eigen-decomposition did, for the cost
   // of the factorisation the solve needs anyway.
+  auto solvable = [](const Eigen::LDLT<Mat6>& f) { return f.info() == Eigen::Success && f.rcond() > 1e-10; };
+  // The cubic, with slope rows weighted `ratio` as in the quadratic `c` factorised as `f`, where it
+  // fits significantly better (kCubicSignificance).
+  auto addCubic = [&](double ratio, const Eigen::LDLT<Mat6>& f, Vec6& c) {
+    if (D == 3 && used >= 12)
+      CubicIfSignificant(MatN(AhN + ratio * AsN), VecN(bhN + ratio * bsN), f, Hh + ratio * Ss,
+                         used + 2.0 * m.withSlopes, c);
+  };
   Eigen::LDLT<Mat6> ldlt(Ah + sw2 * As);  // the factorisation of the final quadratic's system
-  if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-10)) return pc;
+  if (!solvable(ldlt)) return pc;
   Vec6 x = ldlt.solve(bh + sw2 * bs);
   double lambda = sw2;  // the slope rows' weight the final quadratic used
   // sw2 weighs slope rows against height rows as if their variances were in a fixed ratio,
@@ -210,7 +218,7 @@ PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& 
           if (eh < 0.1 * sw2 * es) {
             const double ratio = std::max(eh / es, 1e-9 * sw2);
             const Eigen::LDLT<Mat6> again(Ah + ratio * As);
-            if (again.info() == Eigen::Success && again.rcond() > 1e-10) {
+            if (solvable(again)) {
               x = again.solve(bh + ratio * bs);
               lambda = ratio;
               ldlt = again;
@@ -218,22 +226,17 @@ PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& 
           } else if (D == 3 && sw2 * es < 0.1 * eh) {
             const double ratio = std::min(eh / std::max(es, 1e-300), 1e6 * sw2);
             const Eigen::LDLT<Mat6> again(Ah + ratio * As);
-            if (again.info() == Eigen::Success && again.rcond() > 1e-10) {
+            if (solvable(again)) {
               slopeCurvature = true;
               xc = again.solve(bh + ratio * bs);
-              if (used >= 12)
-                CubicIfSignificant(MatN(AhN + ratio * AsN), VecN(bhN + ratio * bsN), again, Hh + ratio * Ss,
-                                   used + 2.0 * m.withSlopes, xc);
+              addCubic(ratio, again, xc);
             }
           }
         }
       }
     }
   }
-  // The cubic, with the same row weights, where it fits significantly better (kCubicSignificance).
-  if (D == 3 && used >= 12)
-    CubicIfSignificant(MatN(AhN + lambda * AsN), VecN(bhN + lambda * bsN), ldlt, Hh + lambda * Ss,
-                       used + 2.0 * m.withSlopes, x);
+  addCubic(lambda, ldlt, x);
   if (slopeCurvature) x.head<3>() = xc.head<3>();
   const double d = x(3), e = x(4);
   Eigen::Matrix2d I, II;
