@@ -29,12 +29,12 @@
 #ifndef NVV_CORE_SHEET_FIT_H
 #define NVV_CORE_SHEET_FIT_H
 
-#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <vector>
 
 #include "curvature_votes.h"
+#include "small_ldlt.h"
 
 namespace nvv {
 
@@ -44,12 +44,10 @@ struct SheetSample {
 };
 
 // A cheap conditioning test of a factorisation that is only a shortcut's (the fit's own solve
-// uses the reciprocal condition estimate): its pivots within 1e12 of each other.
-template <class Ldlt>
-bool WellConditioned(const Ldlt& f) {
-  if (f.info() != Eigen::Success) return false;
-  const auto D = f.vectorD().cwiseAbs();
-  return D.minCoeff() > 1e-12 * D.maxCoeff();
+// uses the reciprocal condition number): its pivots within 1e12 of each other.
+template <int N>
+bool WellConditioned(const SmallLdlt<N>& f) {
+  return f.PivotsWithin(1e-12);
 }
 
 // Sums of monomials over the weighted samples, from which the normal equations of a height
@@ -110,7 +108,7 @@ constexpr double kCubicSignificance = 10.0;
 
 // D = 2: no cubic terms to add.
 inline void CubicIfSignificant(const Eigen::Matrix<double, 6, 6>&, const Eigen::Matrix<double, 6, 1>&,
-                               const Eigen::LDLT<Eigen::Matrix<double, 6, 6>>&, double, double,
+                               const SmallLdlt<6>&, double, double,
                                Eigen::Matrix<double, 6, 1>&) {}
 
 // Given the quadratic's minimiser x of |rows|^2 (system A22 x = b2, factorised), adds the cubic
@@ -119,15 +117,15 @@ inline void CubicIfSignificant(const Eigen::Matrix<double, 6, 6>&, const Eigen::
 // coefficients are c3 = S^-1 g, its quadratic part x - A22^-1 A23 c3, and the residual drops by
 // g'c3. `yy` is the targets' weighted square sum, `rows` the number of rows.
 inline void CubicIfSignificant(const Eigen::Matrix<double, 10, 10>& A, const Eigen::Matrix<double, 10, 1>& b,
-                               const Eigen::LDLT<Eigen::Matrix<double, 6, 6>>& quadratic, double yy, double rows,
+                               const SmallLdlt<6>& quadratic, double yy, double rows,
                                Eigen::Matrix<double, 6, 1>& x) {
   const Eigen::Matrix<double, 6, 4> A23 = A.topRightCorner<6, 4>();
-  const Eigen::Matrix<double, 6, 4> Z = quadratic.solve(A23);
+  const Eigen::Matrix<double, 6, 4> Z = quadratic.Solve(A23);
   const Eigen::Matrix4d S = A.bottomRightCorner<4, 4>() - A23.transpose() * Z;
   const Eigen::Vector4d g = b.tail<4>() - A23.transpose() * x;
-  const Eigen::LDLT<Eigen::Matrix4d> schur(S);
-  if (!schur.isPositive() || !WellConditioned(schur)) return;
-  const Eigen::Vector4d c3 = schur.solve(g);
+  const SmallLdlt<4> schur(S);
+  if (!WellConditioned(schur)) return;
+  const Eigen::Vector4d c3 = schur.Solve(g);
   const double drop = g.dot(c3);
   const double rssQuadratic = std::max(0.0, yy - x.dot(b.head<6>()));
   const double rssCubic = std::max(1e-300, rssQuadratic - drop);
@@ -164,19 +162,19 @@ PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& 
   const double Hh = m.Hh, Ss = m.Ss, M0 = m.M[0][0], S0 = m.S[0][0];  // S0 > 0 where withSlopes > 0
   if (used < 3) return pc;
   // Too few or collinear samples leave A (nearly) singular: refuse rather than fit noise. The
-  // LDLT's reciprocal condition estimate does what a 6x6 eigen-decomposition did, for the cost
-  // of the factorisation the solve needs anyway.
-  auto solvable = [](const Eigen::LDLT<Mat6>& f) { return f.info() == Eigen::Success && f.rcond() > 1e-10; };
+  // reciprocal condition number does what a 6x6 eigen-decomposition did, from the factorisation
+  // the solve needs anyway.
+  auto solvable = [](const SmallLdlt<6>& f) { return f.Rcond() > 1e-10; };
   // The cubic, with slope rows weighted `ratio` as in the quadratic `c` factorised as `f`, where it
   // fits significantly better (kCubicSignificance).
-  auto addCubic = [&](double ratio, const Eigen::LDLT<Mat6>& f, Vec6& c) {
+  auto addCubic = [&](double ratio, const SmallLdlt<6>& f, Vec6& c) {
     if (D == 3 && used >= 12)
       CubicIfSignificant(MatN(AhN + ratio * AsN), VecN(bhN + ratio * bsN), f, Hh + ratio * Ss,
                          used + 2.0 * m.withSlopes, c);
   };
-  Eigen::LDLT<Mat6> ldlt(Ah + sw2 * As);  // the factorisation of the final quadratic's system
+  SmallLdlt<6> ldlt(Ah + sw2 * As);  // the factorisation of the final quadratic's system
   if (!solvable(ldlt)) return pc;
-  Vec6 x = ldlt.solve(bh + sw2 * bs);
+  Vec6 x = ldlt.Solve(bh + sw2 * bs);
   double lambda = sw2;  // the slope rows' weight the final quadratic used
   // sw2 weighs slope rows against height rows as if their variances were in a fixed ratio,
   // right under noise. On a clean flat sheet next to a crease the heights are exact while the
@@ -206,29 +204,29 @@ PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& 
     auto slopeVar = [&](const Vec6& c) {
       return std::max(0.0, Ss - 2 * c.dot(bs) + c.dot(As * c)) / (2 * S0) * (2.0 * used) / (2.0 * used - 5);
     };
-    const Eigen::LDLT<Mat6> heights(Ah);
+    const SmallLdlt<6> heights(Ah);
     if (WellConditioned(heights)) {
-      const double eh = heightVar(heights.solve(bh));
+      const double eh = heightVar(heights.Solve(bh));
       if (D == 3 || eh < 0.1 * sw2 * slopeVar(x)) {
-        const Eigen::LDLT<Eigen::Matrix<double, 5, 5>> slopes(As.topLeftCorner<5, 5>());
+        const SmallLdlt<5> slopes(As.topLeftCorner<5, 5>());
         if (WellConditioned(slopes)) {
           Vec6 xs = Vec6::Zero();
-          xs.head<5>() = slopes.solve(bs.head<5>());
+          xs.head<5>() = slopes.Solve(bs.head<5>());
           const double es = slopeVar(xs);
           if (eh < 0.1 * sw2 * es) {
             const double ratio = std::max(eh / es, 1e-9 * sw2);
-            const Eigen::LDLT<Mat6> again(Ah + ratio * As);
+            const SmallLdlt<6> again(Ah + ratio * As);
             if (solvable(again)) {
-              x = again.solve(bh + ratio * bs);
+              x = again.Solve(bh + ratio * bs);
               lambda = ratio;
               ldlt = again;
             }
           } else if (D == 3 && sw2 * es < 0.1 * eh) {
             const double ratio = std::min(eh / std::max(es, 1e-300), 1e6 * sw2);
-            const Eigen::LDLT<Mat6> again(Ah + ratio * As);
+            const SmallLdlt<6> again(Ah + ratio * As);
             if (solvable(again)) {
               slopeCurvature = true;
-              xc = again.solve(bh + ratio * bs);
+              xc = again.Solve(bh + ratio * bs);
               addCubic(ratio, again, xc);
             }
           }
