@@ -316,7 +316,7 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
           if (out[x].cls != VertexClass::Surface) { reachesCrease = true; continue; }
           sc.samples.push_back({g.pos[x] - g.pos[v], normalOf(x)});
         }
-        pc = SheetQuadricFit(F, sc.samples, s1.radius, slopeWeight, cosPhi, p.cubicFit && !reachesCrease);
+        pc = SheetQuadricFit(F, sc.samples, s1.radius, slopeWeight, cosPhi, p.cubicFit && !reachesCrease, !last);
         if (!last) {  // hand the fitted normal (or, if the fit failed, this round's) to the next round
           const Eigen::Vector3d n = pc.ok ? pc.normal : Nv;
           for (int j = 0; j < 3; ++j) fittedNormal[v][j] = float(n[j]);

@@ -132,8 +132,11 @@ inline void CubicIfSignificant(const Eigen::Matrix<double, 10, 10>& A, const Eig
   if (drop / 4 > kCubicSignificance * rssCubic / (rows - 10)) x -= Z * c3;
 }
 
+// `normalOnly`: the caller keeps only the fitted normal (a fit round before the last), so the
+// slopes' curvature, which changes only a, b, c, is not computed; the normal is the same bits.
 template <int D>
-PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& m, double scale, double sw2) {
+PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& m, double scale, double sw2,
+                                        bool normalOnly = false) {
   PrincipalCurvatures pc;
   typedef Eigen::Matrix<double, 6, 6> Mat6;
   typedef Eigen::Matrix<double, 6, 1> Vec6;
@@ -207,7 +210,8 @@ PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& 
     const SmallLdlt<6> heights(Ah);
     if (WellConditioned(heights)) {
       const double eh = heightVar(heights.Solve(bh));
-      if (D == 3 || eh < 0.1 * sw2 * slopeVar(x)) {
+      const bool slopesForCurvature = D == 3 && !normalOnly;
+      if (slopesForCurvature || eh < 0.1 * sw2 * slopeVar(x)) {
         const SmallLdlt<5> slopes(As.topLeftCorner<5, 5>());
         if (WellConditioned(slopes)) {
           Vec6 xs = Vec6::Zero();
@@ -221,7 +225,7 @@ PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& 
               lambda = ratio;
               ldlt = again;
             }
-          } else if (D == 3 && sw2 * es < 0.1 * eh) {
+          } else if (slopesForCurvature && sw2 * es < 0.1 * eh) {
             const double ratio = std::min(eh / std::max(es, 1e-300), 1e6 * sw2);
             const SmallLdlt<6> again(Ah + ratio * As);
             if (solvable(again)) {
@@ -260,7 +264,7 @@ PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& 
 // samples are one-sided and the cubic's extrapolation to v is unstable).
 template <int D>
 PrincipalCurvatures SheetFitOfDegree(const TangentFrame& F, const std::vector<SheetSample>& samples, double scale,
-                                     double sw2, double cosPhi) {
+                                     double sw2, double cosPhi, bool normalOnly) {
   SheetMoments<D> m;
   for (const auto& s : samples) {
     const double agree = (F.n.dot(s.n) - cosPhi) / (1.0 - cosPhi);
@@ -272,14 +276,15 @@ PrincipalCurvatures SheetFitOfDegree(const TangentFrame& F, const std::vector<Sh
     const bool slopes = F.n.dot(s.n) > 0.2;
     m.Add(w, u, v, h, slopes, slopes ? -F.e1.dot(s.n) : 0.0, slopes ? -F.e2.dot(s.n) : 0.0);
   }
-  return SheetFitFromMoments<D>(F, m, scale, sw2);
+  return SheetFitFromMoments<D>(F, m, scale, sw2, normalOnly);
 }
 
 inline PrincipalCurvatures SheetQuadricFit(const TangentFrame& F, const std::vector<SheetSample>& samples,
-                                           double scale, double slopeWeight, double cosPhi, bool cubic = false) {
+                                           double scale, double slopeWeight, double cosPhi, bool cubic = false,
+                                           bool normalOnly = false) {
   const double sw2 = (slopeWeight / scale) * (slopeWeight / scale);
-  return cubic && samples.size() >= 12 ? SheetFitOfDegree<3>(F, samples, scale, sw2, cosPhi)
-                                       : SheetFitOfDegree<2>(F, samples, scale, sw2, cosPhi);
+  return cubic && samples.size() >= 12 ? SheetFitOfDegree<3>(F, samples, scale, sw2, cosPhi, normalOnly)
+                                       : SheetFitOfDegree<2>(F, samples, scale, sw2, cosPhi, normalOnly);
 }
 
 }  // namespace nvv
