@@ -306,9 +306,6 @@ PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& 
   return pc;
 }
 
-// The fit of v's same-sheet samples. `cubic`: a cubic may replace the quadratic where it is
-// significant (the caller allows it only where the neighbourhood reaches no crease: there the
-// samples are one-sided and the cubic's extrapolation to v is unstable).
 // A sample's row weight w (the normal agreement above) and its coordinates (u, v, h) in the
 // frame, scaled by 1/scale (which keeps the system well conditioned at any mesh scale); false
 // where the sample gets no weight.
@@ -323,6 +320,9 @@ inline bool SampleInFrame(const TangentFrame& F, const SheetSample& s, double sc
   return true;
 }
 
+// The fit of v's same-sheet samples. `cubic`: a cubic may replace the quadratic where it is
+// significant (the caller allows it only where the neighbourhood reaches no crease: there the
+// samples are one-sided and the cubic's extrapolation to v is unstable).
 template <int D>
 PrincipalCurvatures SheetFitOfDegree(const TangentFrame& F, const std::vector<SheetSample>& samples, double scale,
                                      double sw2, double cosPhi, bool normalOnly) {
