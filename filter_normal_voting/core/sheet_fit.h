@@ -154,6 +154,43 @@ struct NoCircleTerm {
 // +25 % (docs/accuracy.md gives the measurements).
 constexpr double kCircleSignificance = 1000.0;
 
+// The slopes' tilt test. The slope rows of the first fit round are pass 1's voted normals, and
+// beside a crease these lean towards it (their votes came from both sheets, weighted over g_m),
+// by an amount that changes smoothly with the distance to the crease: the slope rows fit it
+// well on their own (so the variance ratio above does not see it), yet they pull the joint
+// fit's normal off the heights'. The rounds undo it only slowly (roof of 120 deg, 1 % noise,
+// k = 5, 0.5-3 l_ave from the ridge: normal median 0.47, 0.40, 0.32, 0.24 deg after 1-4 rounds).
+// The test compares the gradient (d, e) of the joint fit x with the heights' own xh, in the
+// heights' covariance s^2 [A_h^-1]_de:
+//   T = (x - xh)_de' ([A_h^-1]_de)^-1 (x - xh)_de / (2 s^2),  s^2 = RSS_h(xh) / (n - 6),
+// an F(2, n - 6) statistic where the slopes agree with the heights. Where T exceeds the
+// threshold, that round keeps the heights' normal (its curvature is not kept anyway), and the
+// next round's slopes are those normals. Measured (docs/accuracy.md): that roof's normal median
+// 0.40 -> 0.16 deg; 4 and 6 also fired on consistent fits under 5 % noise at k = 3 (normal p90
+// +7-14 %), and a test on all six coefficients (the full height residual) had too little power
+// to separate the two at any threshold; the last round, where the test also hit the capped
+// cylinder's curvature (the quadratic's own remainder beside a curved rim), is left alone.
+constexpr double kSlopeTiltSignificance = 8.0;
+
+// True where the joint fit x tilts the normal significantly off the heights' own fit xh (the
+// test above); `heights` factorises A_h, Hh and bh are the heights' sum of squares and moments.
+template <class Ldlt, class Vec6>
+bool SlopesTiltTheNormal(const Ldlt& heights, const Vec6& xh, const Vec6& x, double Hh, const Vec6& bh, int used) {
+  const double s2 = std::max(0.0, Hh - xh.dot(bh)) / (used - 6.0);
+  if (!(s2 > 0)) return false;  // heights fit exactly: the variance ratio above already trusts them
+  Vec6 ud = Vec6::Zero(), ue = Vec6::Zero();
+  ud(3) = 1;
+  ue(4) = 1;
+  const Vec6 cd = heights.Solve(ud), ce = heights.Solve(ue);
+  Eigen::Matrix2d C;  // [A_h^-1]_de
+  C << cd(3), ce(3), cd(4), ce(4);
+  const Eigen::Vector2d t = (x - xh).template segment<2>(3);
+  const double det = C(0, 0) * C(1, 1) - C(0, 1) * C(1, 0);
+  if (!(det > 0)) return false;
+  const Eigen::Vector2d Ct(C(1, 1) * t(0) - C(0, 1) * t(1), C(0, 0) * t(1) - C(1, 0) * t(0));  // det C^-1 t
+  return t.dot(Ct) / det > 2.0 * kSlopeTiltSignificance * s2;
+}
+
 // `normalOnly`: the caller keeps only the fitted normal (a fit round before the last), so the
 // slopes' curvature, which changes only a, b, c, is not computed; the normal is the same bits.
 template <int D, class Circle = NoCircleTerm>
@@ -281,6 +318,13 @@ PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& 
             }
           }
         }
+      }
+      // The slopes' tilt test (kSlopeTiltSignificance): in a round whose curvature is not kept,
+      // beside a crease, the heights' own normal where the slopes move it significantly.
+      if (D == 2 && normalOnly && lambda == sw2 && used > 12 && SlopesTiltTheNormal(heights, xh, x, Hh, bh, used)) {
+        x = xh;
+        lambda = 0;
+        ldlt = heights;
       }
     }
   }
