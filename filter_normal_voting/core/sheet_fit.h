@@ -166,10 +166,11 @@ constexpr double kCircleSignificance = 1000.0;
 // an F(2, n - 6) statistic where the slopes agree with the heights. Where T exceeds the
 // threshold, that round keeps the heights' normal (its curvature is not kept anyway), and the
 // next round's slopes are those normals. Measured (docs/accuracy.md): that roof's normal median
-// 0.40 -> 0.16 deg; 4 and 6 also fired on consistent fits under 5 % noise at k = 3 (normal p90
-// +7-14 %), and a test on all six coefficients (the full height residual) had too little power
-// to separate the two at any threshold; the last round, where the test also hit the capped
-// cylinder's curvature (the quadratic's own remainder beside a curved rim), is left alone.
+// 0.40 -> 0.16 deg; at 3 and 6 the test also fired on consistent fits under 5 % noise at k = 3
+// (normal p90 +7-10 % at 6), at 10 it no longer won the roof (0.22 deg). The same test on all six
+// coefficients (the full height residual) won it only at 3, then also fired under noise; in the
+// last round that form also hit the capped cylinder's curvature (the quadratic's own remainder
+// beside a curved rim), so the last round is left alone.
 constexpr double kSlopeTiltSignificance = 8.0;
 
 // True where the joint fit x tilts the normal significantly off the heights' own fit xh (the
