@@ -321,7 +321,8 @@ PrincipalCurvatures SheetFitFromMoments(const TangentFrame& F, SheetMoments<D>& 
         }
       }
       // The slopes' tilt test (kSlopeTiltSignificance): in a round whose curvature is not kept,
-      // beside a crease, the heights' own normal where the slopes move it significantly.
+      // where no cubic is fitted (D == 2: beside a crease, or everywhere with the cubic turned
+      // off, as for the circle term), the heights' own normal where the slopes move it significantly.
       if (D == 2 && normalOnly && lambda == sw2 && used > 12 && SlopesTiltTheNormal(heights, xh, x, Hh, bh, used)) {
         x = xh;
         lambda = 0;
