@@ -220,6 +220,13 @@ TEST(Pass2Curvature, CreaseStoppingKeepsCurvatureClean) {
   EXPECT_LT(stop.median, 0.02);
 }
 
+namespace {
+// The true normal of the roof sheet holding P, for a roof whose normals are 2a apart.
+Eigen::Vector3d RoofSheetNormal(const vcg::Point3d& P, double a) {
+  return Eigen::Vector3d((P[0] > 0 ? 1 : -1) * std::sin(a), 0, std::cos(a));
+}
+}  // namespace
+
 // On clean roofs the default fit is exact next to the ridge: the sheets are planes, so the
 // heights fit them exactly, while the neighbours' voted normals lean towards the ridge. The
 // fit must notice that the heights fit far better and not let those slopes tilt it (it did by
@@ -238,8 +245,7 @@ TEST(Pass2Curvature, CleanRoofIsExactNextToTheRidge) {
       const auto& P = m.vert[i].cP();
       const double dist = std::abs(P[0]) / std::cos(a);  // along the sheet
       if (std::abs(P[1]) > 10 || dist < 0.5 || dist > 3.5 || r.res[i].cls != VertexClass::Surface) continue;
-      const Eigen::Vector3d truth((P[0] > 0 ? 1 : -1) * std::sin(a), 0, std::cos(a));
-      en.push_back(AngleDeg(E(r.res[i].normal), truth));
+      en.push_back(AngleDeg(E(r.res[i].normal), RoofSheetNormal(P, a)));
       ek.push_back(std::abs(r.res[i].k1) + std::abs(r.res[i].k2));
     }
     const Stats normal = StatsOf(en), curvature = StatsOf(ek);
@@ -261,7 +267,8 @@ TEST(Pass2Curvature, NoisyRoofNormalBesideTheRidgeAtLargeRadius) {
     nvv_shapes::Roof(m, alpha, 33, 16 * std::cos(a), 32);
     const double lave = nvv_shapes::MeanEdge(m);
     nvv_shapes::AddNoise(m, 0.01 * lave, seed, [&](const vcg::Point3d& q) {
-      return vcg::Point3d((q[0] > 0 ? 1 : -1) * std::sin(a), 0, std::cos(a));
+      const Eigen::Vector3d n = RoofSheetNormal(q, a);
+      return vcg::Point3d(n.x(), n.y(), n.z());
     });
     nvv::Params p = WithK(5.0);
     p.creaseAngleDeg = alpha / 2;
@@ -272,8 +279,7 @@ TEST(Pass2Curvature, NoisyRoofNormalBesideTheRidgeAtLargeRadius) {
       const double dist = std::abs(P[0]) / std::cos(a);
       if (std::abs(P[1]) > 12 || dist < 0.5 * lave || dist > 3 * lave) continue;
       ASSERT_EQ(r.res[i].cls, VertexClass::Surface) << i;
-      const Eigen::Vector3d truth((P[0] > 0 ? 1 : -1) * std::sin(a), 0, std::cos(a));
-      en.push_back(AngleDeg(E(r.res[i].normal), truth));
+      en.push_back(AngleDeg(E(r.res[i].normal), RoofSheetNormal(P, a)));
     }
   }
   const Stats normal = StatsOf(en);

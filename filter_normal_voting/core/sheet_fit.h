@@ -179,10 +179,7 @@ template <class Ldlt, class Vec6>
 bool SlopesTiltTheNormal(const Ldlt& heights, const Vec6& xh, const Vec6& x, double Hh, const Vec6& bh, int used) {
   const double s2 = std::max(0.0, Hh - xh.dot(bh)) / (used - 6.0);
   if (!(s2 > 0)) return false;  // heights fit exactly: the variance ratio above already trusts them
-  Vec6 ud = Vec6::Zero(), ue = Vec6::Zero();
-  ud(3) = 1;
-  ue(4) = 1;
-  const Vec6 cd = heights.Solve(ud), ce = heights.Solve(ue);
+  const Vec6 cd = heights.Solve(Vec6::Unit(3)), ce = heights.Solve(Vec6::Unit(4));
   Eigen::Matrix2d C;  // [A_h^-1]_de
   C << cd(3), ce(3), cd(4), ce(4);
   const Eigen::Vector2d t = (x - xh).template segment<2>(3);
