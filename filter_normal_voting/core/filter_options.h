@@ -92,8 +92,9 @@ inline const std::vector<ParamSpec>& FilterParameterTable() {
      "smooth surfaces for about 50 % more time; 3-4 rarely add more.",
      2.0, 1, 4, {}, {}, true},
     {"cubic_fit", ParamType::Bool, "Cubic where significant",
-     "Crease-aware quadric fit only: where a neighbourhood reaches no crease, fit a cubic patch instead "
-     "when its extra terms are statistically significant. Removes the normal tilt a quadratic leaves "
+     "Crease-aware quadric fit only: where a neighbourhood reaches no crease and the mesh's border is "
+     "not within half its radius, fit a cubic patch instead when its extra terms are statistically "
+     "significant. Removes the normal tilt a quadratic leaves "
      "on surfaces whose curvature varies (tori, fillets, free-form scans); pass 2 takes about 10-25 % "
      "longer. Off: always the quadratic.",
      1.0, 0, 1, {}, {}, true},

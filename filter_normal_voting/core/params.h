@@ -50,8 +50,9 @@ struct Params {
   // fitted normals in the slope rows (re-voting with refined normals). See docs/accuracy.md
   // for what each round buys and costs.
   int fitRounds = 2;
-  // SheetQuadric only: where the neighbourhood reaches no crease vertex, a cubic height field
-  // replaces the quadratic if its extra terms are significant (sheet_fit.h); false: always quadratic.
+  // SheetQuadric only: where the neighbourhood reaches no crease vertex and the mesh's border is
+  // not within g_m / 2, a cubic height field replaces the quadratic if its extra terms are
+  // significant (sheet_fit.h, normal_vector_voting.h); false: always quadratic.
   bool cubicFit = true;
   ClassRule classRule = ClassRule::SignAware;
   double sigmaFraction = 1.0 / 3.0;  // Eq. 8: sigma = sigmaFraction * g_m (paper: 1/3)

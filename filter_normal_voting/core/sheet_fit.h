@@ -19,9 +19,10 @@
 // second II = [[2a, b], [b, 2c]] / sqrt(1+d^2+e^2); principal curvatures are the
 // generalised eigenvalues of (II, I) with the sign flipped, so that a sphere with outward
 // normals has +1/R (h = -(u^2+w^2)/(2R) there).
-// Where the neighbourhood reaches no crease, a cubic height field (four more terms, the same
-// rows) replaces the quadratic when an F test finds its extra terms significant: on a clean
-// torus the quadratic's slope rows absorb the cubic terms and tilt the normal (0.4 deg at k = 3).
+// Where the neighbourhood reaches no crease and no border is near, a cubic height field (four
+// more terms, the same rows) replaces the quadratic when an F test finds its extra terms
+// significant: on a clean torus the quadratic's slope rows absorb the cubic terms and tilt the
+// normal (0.4 deg at k = 3).
 // The quadratic's coefficients of the cubic are read at the origin just the same. There, too,
 // the second-order terms come from the slope rows wherever these fit far better than the
 // heights (the shape operator is the normal's derivative, and normals are exactly linear on
@@ -364,8 +365,8 @@ inline bool SampleInFrame(const TangentFrame& F, const SheetSample& s, double sc
 }
 
 // The fit of v's same-sheet samples. `cubic`: a cubic may replace the quadratic where it is
-// significant (the caller allows it only where the neighbourhood reaches no crease: there the
-// samples are one-sided and the cubic's extrapolation to v is unstable).
+// significant (the caller allows it only where the neighbourhood reaches no crease and no border
+// is near: there the samples are one-sided and the cubic's extrapolation to v is unstable).
 template <int D>
 PrincipalCurvatures SheetFitOfDegree(const TangentFrame& F, const std::vector<SheetSample>& samples, double scale,
                                      double sw2, double cosPhi, bool normalOnly) {
