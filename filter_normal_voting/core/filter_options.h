@@ -94,9 +94,8 @@ inline const std::vector<ParamSpec>& FilterParameterTable() {
     {"cubic_fit", ParamType::Bool, "Cubic where significant",
      "Crease-aware quadric fit only: where a neighbourhood reaches no crease and the mesh's border is "
      "not within half its radius, fit a cubic patch instead when its extra terms are statistically "
-     "significant. Removes the normal tilt a quadratic leaves "
-     "on surfaces whose curvature varies (tori, fillets, free-form scans); pass 2 takes about 10-25 % "
-     "longer. Off: always the quadratic.",
+     "significant. Removes the normal tilt a quadratic leaves on surfaces whose curvature varies "
+     "(tori, fillets, free-form scans); pass 2 takes about 10-25 % longer. Off: always the quadratic.",
      1.0, 0, 1, {}, {}, true},
     {"class_rule", ParamType::Enum, "Classification rule",
      "Sign-aware: orders the vote matrix's eigenvectors by the oriented mean vote, so sharp edges "
