@@ -300,19 +300,7 @@ inline Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std:
   if (p.fit == CurvatureFit::SheetQuadric && p.cubicFit) {
     AssignOnHugePages(onBorder, g.VertexCount(), std::uint8_t(0));
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
-    for (int v = 0; v < g.VertexCount(); ++v)
-      for (int i = g.FaceBegin(v); i < g.FaceEnd(v) && !onBorder[v]; ++i) {
-        const int f = g.vfList[i];
-        for (int j = 0; j < 3 && !onBorder[v]; ++j) {
-          const int a = g.face[f][j], b = g.face[f][(j + 1) % 3];
-          if (a != v && b != v) continue;
-          // The faces of the endpoint with fewer faces are scanned (a fan's centre is not).
-          const bool aFewer = g.FaceEnd(a) - g.FaceBegin(a) <= g.FaceEnd(b) - g.FaceBegin(b);
-          int across = 0;
-          g.ForEachFaceAcross(f, aFewer ? a : b, aFewer ? b : a, [&](int) { ++across; });
-          onBorder[v] = across == 0;
-        }
-      }
+    for (int v = 0; v < g.VertexCount(); ++v) onBorder[v] = g.OnBorder(v);
   }
   for (int round = 0; round < rounds; ++round) {
     const bool last = round == rounds - 1;

@@ -60,14 +60,32 @@ struct SurfaceGraph {
   }
 
   // Calls fn(o) for every face o != f that holds the edge (a, b) of face f: one on a manifold
-  // edge, none on a boundary, several on a non-manifold one.
+  // edge, none on a boundary, several on a non-manifold one. The faces of the endpoint with fewer
+  // faces are scanned (as in CheckOrientation): from a 100,000-valence fan's centre, each spoke
+  // costs the spoke's two faces, not the centre's 100,000.
   template <class Fn>
   void ForEachFaceAcross(int f, int a, int b, Fn fn) const {
-    for (int i = FaceBegin(a); i < FaceEnd(a); ++i) {
+    const bool aFewer = FaceEnd(a) - FaceBegin(a) <= FaceEnd(b) - FaceBegin(b);
+    const int scan = aFewer ? a : b, other = aFewer ? b : a;
+    for (int i = FaceBegin(scan); i < FaceEnd(scan); ++i) {
       const int o = vfList[i];
       const auto& t = face[o];
-      if (o != f && (t[0] == b || t[1] == b || t[2] == b)) fn(o);
+      if (o != f && (t[0] == other || t[1] == other || t[2] == other)) fn(o);
     }
+  }
+
+  // True when v has an edge that only one face holds: v is on the mesh's border.
+  bool OnBorder(int v) const {
+    for (int i = FaceBegin(v); i < FaceEnd(v); ++i) {
+      const int f = vfList[i];
+      for (int x : face[f]) {
+        if (x == v) continue;
+        bool across = false;
+        ForEachFaceAcross(f, v, x, [&](int) { across = true; });
+        if (!across) return true;
+      }
+    }
+    return false;
   }
 
   // Fills the graph from positions and faces given as vertex indices (-1 marks a face to skip),
