@@ -28,11 +28,27 @@ gui_start_meshlab() {
   "$@" > "$out/meshlab_gui.log" 2>&1 &
   gui_mlpid=$!
   local wid
-  wid=$(timeout 60 xdotool search --sync --name "MeshLab" | awk 'NR == 1')  # awk reads all: no SIGPIPE
-  [ -n "$wid" ] || { echo "gui smoke: no MeshLab window; its log:"; cat "$out/meshlab_gui.log"; exit 1; }
+  gui_find_window 60 >/dev/null || { echo "gui smoke: no MeshLab window; its log:"; cat "$out/meshlab_gui.log"; exit 1; }
   sleep 5
+  # Searched again: the first match may have been a window MeshLab closed while it started.
+  wid=$(gui_find_window 10) || { echo "gui smoke: MeshLab's window went away; its log:"; cat "$out/meshlab_gui.log"; exit 1; }
   xdotool windowmove "$wid" 0 0 windowsize "$wid" 1280 1000
   sleep 2
+}
+
+# gui_find_window SECONDS: prints the id of a visible window named MeshLab, polling for up to
+# SECONDS. xdotool's search reads the properties of every window on the display and exits with
+# BadWindow when one closes meanwhile (MeshLab's start-up opens and closes several), so a failed
+# search is tried again rather than taken for an answer.
+gui_find_window() {
+  local wid="" i
+  for i in $(seq $(($1 * 2))); do
+    kill -0 "$gui_mlpid" 2>/dev/null || return 1
+    wid=$(xdotool search --onlyvisible --name "MeshLab" 2>/dev/null | awk 'NR == 1') || wid=""  # awk reads all: no SIGPIPE
+    [ -n "$wid" ] && { echo "$wid"; return 0; }
+    sleep 0.5
+  done
+  return 1
 }
 
 # shot NAME: a screenshot $out/NAME.png and the text OCR reads on it, $out/NAME.txt.
