@@ -6,6 +6,9 @@
 for cmd in Xvfb xdotool import tesseract /usr/bin/convert; do
   command -v "$cmd" >/dev/null || { echo "gui smoke: $cmd is missing"; exit 1; }
 done
+# A failing command anywhere, functions included (errtrace), says which before set -e ends the test.
+set -E
+trap 'echo "gui smoke: failed at line $LINENO: $BASH_COMMAND" >&2' ERR
 gui_xpid="" gui_mlpid=""
 gui_cleanup() { [ -n "$gui_mlpid" ] && kill "$gui_mlpid" 2>/dev/null; [ -n "$gui_xpid" ] && kill "$gui_xpid" 2>/dev/null; true; }
 trap gui_cleanup EXIT
