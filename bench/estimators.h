@@ -12,6 +12,7 @@
 
 #include "peers_vcg.h"
 #include "test_support.h"
+#include "core/geodesic_march.h"
 
 namespace nvv_bench {
 
@@ -90,15 +91,14 @@ inline Estimator Nvv(double k, nvv::CurvatureFit fit, int rounds = nvv::Params()
                 nvv::Summary sum;
                 nvv::RunNormalVectorVoting(c.graph, p, res, sum);
                 FromNvv(res, out);
-              }};
-  e.params = p;
+              }, 1, p};
   return e;
 }
 
 inline Estimator Vcg(const char* name, VcgMethod method, double k = 0) {
   return {name, method == VcgMethod::PCA && k > 0 ? 2 : 3, k, [method, k](Context& c, std::vector<Estimate>& out) {
             VcgCurvature(c.m, method, k * c.lave, 1.0, out);
-          }};
+          }, 1, nvv::Params()};
 }
 
 inline Estimator Jet(double k, double radiusFactor = 1) {
@@ -107,7 +107,7 @@ inline Estimator Jet(double k, double radiusFactor = 1) {
   else std::snprintf(name, sizeof name, "CGAL jet r=%g l_ave (2x)", k * radiusFactor);
   return {name, radiusFactor == 1 ? 2 : 4, k, [k, radiusFactor](Context& c, std::vector<Estimate>& out) {
             CgalJet(c.plain, c.Neighbourhoods(k * radiusFactor * c.lave, 10), c.awn, out);
-          }};
+          }, 1, nvv::Params()};
 }
 
 // Flips an answer given in the opposite curvature sign convention.

@@ -12,6 +12,9 @@
 
 #include "report.h"
 #include "test_support.h"
+#include "core/ball_flood.h"
+#include "core/sheet_fit.h"
+#include "core/tangent_frame.h"
 
 using namespace nvv_test;
 

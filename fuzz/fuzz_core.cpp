@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "../tests/test_mesh.h"
-#include "apply/apply_results.h"
+#include "filter/apply_results.h"
 #include "core/normal_vector_voting.h"
 
 namespace {

@@ -12,7 +12,7 @@ out="$here/out"
 bash scripts/install-deps.sh
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DNVV_BUILD_TESTS=OFF >/dev/null
 ninja -C "$build" -j "$(nproc)" filter_normal_voting nvv_mlx nvv_render
-prefix=$(bash scripts/meshlab-prefix.sh "$build/meshlab-prefix" "$build/filter_normal_voting/meshlab/libfilter_normal_voting.so")
+prefix=$(bash scripts/meshlab-prefix.sh "$build/meshlab-prefix" "$build/filter_normal_voting/meshlab/v2020/libfilter_normal_voting.so")
 mkdir -p "$out"
 name=$(basename "${input%.*}")
 # Two runs of the same filter: colour by class, then colour by mean curvature (quality ramp).

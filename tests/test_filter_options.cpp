@@ -4,7 +4,7 @@
 
 #include <set>
 
-#include "apply/apply_results.h"
+#include "filter/apply_results.h"
 #include "test_support.h"
 
 using namespace nvv_test;

@@ -4,6 +4,7 @@
 #include <queue>
 
 #include "test_support.h"
+#include "core/geodesic_march.h"
 
 using namespace nvv_test;
 

@@ -198,7 +198,9 @@ TEST(Degenerate, DefectsGiveDefinedResults) {
       EXPECT_TRUE(std::isfinite(v.lambda[j]));
     }
     EXPECT_TRUE(std::isfinite(v.k1) && std::isfinite(v.k2) && std::isfinite(v.cuspAngle));
-    if (v.cls == VertexClass::Invalid) EXPECT_EQ(0, v.flags);
+    if (v.cls == VertexClass::Invalid) {
+      EXPECT_EQ(0, v.flags);
+    }
   }
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "test_support.h"
+#include "core/crease_thinning.h"
 
 using namespace nvv_test;
 using nvv::VertexClass;
@@ -108,7 +109,9 @@ TEST(Pass1Classes, RoofMatchesCreaseAngleThreshold) {
       SCOPED_TRACE(testing::Message() << "alpha " << alpha << " phi " << phi);
       EXPECT_EQ(alpha > phi ? VertexClass::Crease : VertexClass::Surface, ridge);
       EXPECT_EQ(0, farBad);
-      if (ridge == VertexClass::Crease) EXPECT_NEAR(alpha, cusp, 3.0);
+      if (ridge == VertexClass::Crease) {
+        EXPECT_NEAR(alpha, cusp, 3.0);
+      }
     }
 }
 
@@ -149,7 +152,9 @@ TEST(Pass1Classes, CubeCreasesAndCorners) {
       edgeCrease += r.res[i].cls == VertexClass::Crease;
       // The crease tangent runs along the cube edge.
       for (int a = 0; a < 3; ++a)
-        if (std::abs(std::abs(P[a]) - h) > 1e-9) EXPECT_GT(std::abs(r.res[i].creaseTangent[a]), 0.99);
+        if (std::abs(std::abs(P[a]) - h) > 1e-9) {
+          EXPECT_GT(std::abs(r.res[i].creaseTangent[a]), 0.99);
+        }
     } else if (onBoundary == 1 && minInner >= 3) {
       ++faceTotal;
       faceSurface += r.res[i].cls == VertexClass::Surface;

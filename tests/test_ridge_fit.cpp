@@ -6,6 +6,9 @@
 #include <random>
 
 #include "test_support.h"
+#include "core/crease_thinning.h"
+#include "core/ridge_fit.h"
+#include "core/tangent_frame.h"
 
 using namespace nvv_test;
 using nvv::VertexClass;
@@ -143,8 +146,9 @@ TEST(Pass1Classes, RidgeFitFindsAShallowNoisyRoof) {
   EXPECT_GT(offStrength, 2 * ridge);  // what the ridge fit is for
   // Kept creases run along the ridge (y).
   for (std::size_t i = 0; i < m.vert.size(); ++i)
-    if (fit.res[i].cls == VertexClass::Crease && std::abs(m.vert[i].cP()[0]) < 0.5 && std::abs(m.vert[i].cP()[1]) < 12)
+    if (fit.res[i].cls == VertexClass::Crease && std::abs(m.vert[i].cP()[0]) < 0.5 && std::abs(m.vert[i].cP()[1]) < 12) {
       EXPECT_GT(std::abs(E(fit.res[i].creaseTangent).y()), 0.9);
+    }
 }
 
 // CloseCreaseGaps on a clean 90 deg roof whose ridge row (x = 0) is marked by hand: a single
@@ -178,7 +182,9 @@ TEST(CreaseGaps, OneMissingRidgeVertexIsClosedAndNothingElse) {
   EXPECT_GT(std::abs(E(res[gap].creaseTangent).y()), 0.99);
   EXPECT_NEAR(nvv::DegToRad(90), res[gap].cuspAngle, 1e-6);
   for (int v = 0; v < n; ++v)
-    if (v != gap) EXPECT_EQ(before[v].cls, res[v].cls) << "vertex " << v;
+    if (v != gap) {
+      EXPECT_EQ(before[v].cls, res[v].cls) << "vertex " << v;
+    }
   // A second gap next to the first is two vertices wide: left open.
   res = before;
   for (int v : row)

@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "scripting/mlx_script.h"
+#include "filter/mlx_script.h"
 
 int main(int argc, char** argv) {
   std::map<std::string, std::string> values;

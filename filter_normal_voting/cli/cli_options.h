@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/filter_options.h"
+#include "filter/filter_options.h"
 
 namespace nvv_cli {
 

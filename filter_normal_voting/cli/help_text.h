@@ -7,7 +7,7 @@
 #include <string>
 
 #include "cli/cli_options.h"
-#include "core/filter_options.h"
+#include "filter/filter_options.h"
 
 namespace nvv_cli {
 

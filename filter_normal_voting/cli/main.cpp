@@ -1,12 +1,9 @@
 // nvv: Normal Vector Voting from the command line. Reads a mesh, runs the filter with the
 // parameters of nvv::FilterParameterTable(), applies the results as the MeshLab plugin does
 // and writes the full-result PLY (io/result_ply.h). See `nvv --help` and docs/cli.md.
-#include <sys/stat.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -15,9 +12,7 @@
 #include "cli/help_text.h"
 #include "cli/load_mesh.h"
 
-#include "apply/apply_results.h"
-#include "core/normal_vector_voting.h"
-#include "io/result_ply.h"
+#include "filter/run_filter.h"
 
 #ifndef NVV_VERSION
 #define NVV_VERSION "unknown"
@@ -81,15 +76,6 @@ int Run(int argc, char** argv) {
   nvv_cli::LoadInfo info;
   std::string error;
   if (!nvv_cli::LoadMesh(a.input, m, info, error)) return Fail(kBadInput, a.input + ": " + error);
-  // Refuse an unwritable destination before spending time on the computation.
-  const std::size_t slash = a.output.find_last_of('/');
-  const std::string outDir = slash == std::string::npos ? "." : (slash == 0 ? "/" : a.output.substr(0, slash));
-  if (access(outDir.c_str(), W_OK) != 0)
-    return Fail(kCannotWrite, "cannot write '" + a.output + "': " + std::strerror(errno) + " (" + outDir + ")");
-  struct stat outStat;
-  if (::stat(a.output.c_str(), &outStat) == 0 && S_ISDIR(outStat.st_mode))
-    return Fail(kCannotWrite, "cannot write '" + a.output + "': it is a directory");
-
   if (!a.quiet) {
     std::printf("input: %s (%s, %d vertices, %d faces%s)\n", a.input.c_str(), info.format.c_str(), m.vn, m.fn,
                 info.weldedVertices > 0 ? (", welded " + std::to_string(info.weldedVertices) + " vertices").c_str()
@@ -100,19 +86,21 @@ int Run(int argc, char** argv) {
   TerminalProgress terminal;
   nvv::Progress progress;
   if (!a.quiet && isatty(fileno(stderr))) progress = [&terminal](int p, const char* t) { return terminal(p, t); };
-  std::vector<nvv::VertexResult> res;
-  nvv::Summary sum;
-  const nvv::Status st = vcg::tri::NormalVectorVoting<Mesh>::Compute(m, a.options.core, res, sum, progress);
+  nvv::RunRequest request;
+  request.options = a.options;
+  request.resultPly = a.output;
+  request.binaryPly = !a.ascii;
+  request.plyComments = HeaderComments(a);
+  const nvv::RunOutcome run = nvv::RunFilter(m, request, progress);
   terminal.Finish();
-  if (!st.ok) return Fail(kRefused, a.input + ": " + st.message);
-
-  nvv::ApplyResults<Mesh>::Apply(m, res, a.options);
-  if (!nvv::WriteResultPly(a.output, m, res, !a.ascii, HeaderComments(a), error))
-    return Fail(kCannotWrite, error);
-
+  switch (run.failure) {
+    case nvv::RunOutcome::kNone: break;
+    case nvv::RunOutcome::kCannotWrite: return Fail(kCannotWrite, run.error);
+    default: return Fail(kRefused, a.input + ": " + run.error);
+  }
   if (!a.quiet) {
-    std::printf("%s\n", nvv::SummaryLine(sum).c_str());
-    for (const auto& w : sum.warnings) std::printf("warning: %s\n", w.c_str());
+    std::printf("%s\n", run.log.front().c_str());
+    for (const auto& w : run.warnings) std::printf("warning: %s\n", w.c_str());
     std::printf("output: %s (%s)\n", a.output.c_str(), a.ascii ? "ascii" : "binary_little_endian");
   }
   return kOk;

@@ -5,32 +5,22 @@
 #ifndef NVV_CORE_CREASE_CURVATURE_H
 #define NVV_CORE_CREASE_CURVATURE_H
 
-#include <cmath>
 #include <vector>
 
 #include "geodesic_march.h"
+#include "normal_votes.h"
+#include "parallel_pass.h"
 #include "vertex_result.h"
 
 namespace nvv {
 
-inline Eigen::Vector3d ToVec(const float* p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
-
 // `march` must hold the march from v. Returns 0 when no other crease vertex was reached.
-inline double CreaseCurvature(const GeodesicMarch& march, const std::vector<VertexResult>& res, int v,
-                              double sigma) {
-  const Eigen::Vector3d T = ToVec(res[v].creaseTangent);
-  double num = 0, den = 0;
-  for (int x : march.Reached()) {
-    if (x == v || res[x].cls != VertexClass::Crease) continue;
-    const double g = march.Distance(x);
-    if (!(g > 0)) continue;
-    const double c = std::min(1.0, std::abs(T.dot(ToVec(res[x].creaseTangent))));
-    const double w = std::exp(-g / sigma);
-    num += w * std::acos(c) / g;
-    den += w;
-  }
-  return den > 0 ? num / den : 0.0;
-}
+double CreaseCurvature(const GeodesicMarch& march, const std::vector<VertexResult>& res, int v, double sigma);
+
+// The crease curvature of every CREASE vertex, from a march of radius g_m (s.radius); reads the
+// classes and tangents of pass 1 and thinning only.
+PassEnd CurvatureAlongCreases(const SurfaceGraph& g, const Pass1Settings& s, int threads, PassProgress& progress,
+                              std::vector<VertexResult>& out);
 
 }  // namespace nvv
 

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <string>
 
+#include "tuning.h"
+
 namespace nvv {
 
 // How pass 2 turns the neighbourhood into principal curvatures and directions.
@@ -36,10 +38,27 @@ enum class ClassRule : int {
   PaperOrder = 1,  // eigenvalues in decreasing order, as in the paper
 };
 
+// The quadric fit's levers beyond the plain weighted quadratic (sheet_fit.cpp), each on by
+// default and each switchable alone, for tests and for measuring what each buys.
+struct SheetFitLevers {
+  bool reweightSlopes = true;  // slope rows down-weighted where the heights fit far better
+  bool slopeCurvature = true;  // second-order terms from the slopes where they fit far better
+  bool tiltTest = true;        // first rounds beside creases keep the heights' normal where the slopes tilt it
+  bool circleTerm = true;      // one-sided fits beside creases follow circles exactly
+};
+
 struct Params {
   double k = 3.0;               // neighbourhood radius g_m = k * mean edge length ...
   double absoluteRadius = 0.0;  // ... unless this is > 0: then g_m = absoluteRadius
-  double creaseAngleDeg = 60.0; // phi: smallest angle between two sheets' normals that is a crease
+  // phi: smallest angle between two sheets' normals that is a crease. It drives four things:
+  //  - Eq. 10's epsilon (EpsilonFromAngle), i.e. pass 1's classes (normal_votes.cpp);
+  //  - the ridge fit's kink test: a ridge's two fitted sheets are at least phi apart
+  //    (crease_thinning.cpp, ScoreRidges);
+  //  - the sharp-edge veto of thinning: an edge whose faces are more than phi apart (or five
+  //    median edge angles, tuning.h) is a crease of the mesh itself (crease_thinning.cpp);
+  //  - the quadric fit's sample weights: a neighbour whose normal is phi or more off v's gets no
+  //    weight (sheet_fit.cpp, SampleInFrame).
+  double creaseAngleDeg = 60.0;
   double cornerAngleDeg = 60.0; // psi: the same for the third direction (corners)
   bool stopAtCreases = true;    // pass 2 does not march through non-surface vertices (par. 6.5)
   bool thinCreases = true;      // keep only the ridge of each crease band (crease_thinning.h); paper: false
@@ -54,6 +73,7 @@ struct Params {
   // not within g_m / 2, a cubic height field replaces the quadratic if its extra terms are
   // significant (sheet_fit.h, normal_vector_voting.h); false: always quadratic.
   bool cubicFit = true;
+  SheetFitLevers levers;        // SheetQuadric only; not in the parameter table
   ClassRule classRule = ClassRule::SignAware;
   double sigmaFraction = 1.0 / 3.0;  // Eq. 8: sigma = sigmaFraction * g_m (paper: 1/3)
   // Cap on the vertices one march may accept; 0 = automatic, AutoNeighbourhoodCap(). Bounds the
@@ -66,9 +86,14 @@ struct Params {
 // the automatic cap allows four times that (regions up to 4x denser than average keep their whole
 // neighbourhood), and never less than 1,024.
 inline int AutoNeighbourhoodCap(double kEffective) {
-  const double c = 16.0 * kEffective * kEffective;
-  return c > 10000000.0 ? 10000000 : (c < 1024.0 ? 1024 : int(c));
+  const double c = tuning::kAutoCapPerK2 * kEffective * kEffective;
+  return c > double(tuning::kMaxCap) ? tuning::kMaxCap : (c < double(tuning::kAutoCapMin) ? tuning::kAutoCapMin : int(c));
 }
+
+// The weight of a vote cast from geodesic distance g (Eq. 8's fall-off, sigma = sigmaFraction *
+// g_m; pass 1 multiplies it by the triangle's relative area). Written once for the three kinds of
+// votes: pass 1's normal votes, the paper's curvature votes, and the crease-curvature votes.
+inline double VoteWeight(double g, double sigma) { return std::exp(-g / sigma); }
 
 inline double DegToRad(double d) { return d * 3.14159265358979323846 / 180.0; }
 inline double RadToDeg(double r) { return r * 180.0 / 3.14159265358979323846; }
@@ -83,31 +108,7 @@ inline double AngleFromEpsilon(double eps) {
 }
 
 // Empty when the parameters are usable; otherwise a sentence for the user.
-inline std::string ValidateParams(const Params& p) {
-  auto bad = [](double x) { return !std::isfinite(x); };
-  if (bad(p.k) || p.k <= 0.0 || p.k > 50.0)
-    return "Neighbourhood size k must be a number in (0, 50] mean edge lengths (got " +
-           std::to_string(p.k) + ").";
-  if (bad(p.absoluteRadius) || p.absoluteRadius < 0.0)
-    return "The absolute radius must be 0 (use k) or a positive number.";
-  if (bad(p.creaseAngleDeg) || p.creaseAngleDeg < 1.0 || p.creaseAngleDeg > 89.0)
-    return "The crease angle must be between 1 and 89 degrees (got " +
-           std::to_string(p.creaseAngleDeg) + ").";
-  if (bad(p.cornerAngleDeg) || p.cornerAngleDeg < 1.0 || p.cornerAngleDeg > 89.0)
-    return "The corner angle must be between 1 and 89 degrees (got " +
-           std::to_string(p.cornerAngleDeg) + ").";
-  if (bad(p.sigmaFraction) || p.sigmaFraction < 0.01 || p.sigmaFraction > 100.0)
-    return "The weight fall-off (sigma / radius) must be in [0.01, 100].";
-  if (p.maxNeighbourhood != 0 && (p.maxNeighbourhood < 16 || p.maxNeighbourhood > 10000000))
-    return "The neighbourhood cap must be 0 (automatic) or between 16 and 10,000,000 vertices.";
-  if (p.threads < 0 || p.threads > 4096) return "The thread count must be 0 (all) or positive.";
-  if (p.fitRounds < 1 || p.fitRounds > 4) return "The number of fit rounds must be between 1 and 4.";
-  const int fit = static_cast<int>(p.fit);
-  if (fit < 0 || fit > 2) return "Unknown curvature fit.";
-  const int rule = static_cast<int>(p.classRule);
-  if (rule < 0 || rule > 1) return "Unknown classification rule.";
-  return std::string();
-}
+std::string ValidateParams(const Params& p);
 
 }  // namespace nvv
 

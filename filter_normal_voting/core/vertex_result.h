@@ -3,6 +3,7 @@
 #ifndef NVV_CORE_VERTEX_RESULT_H
 #define NVV_CORE_VERTEX_RESULT_H
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -53,6 +54,9 @@ struct VertexResult {
   float CreaseSaliency() const { return lambda[1] - lambda[2]; }
   float CornerSaliency() const { return lambda[2]; }
 };
+
+// A result's float[3] as a double vector.
+inline Eigen::Vector3d ToVec(const float* p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
 
 struct Summary {
   std::size_t vertices = 0;         // size of the vertex container (results are indexed by it)

@@ -70,7 +70,7 @@
 
 #include <vcg/complex/complex.h>
 
-#include "apply/apply_results.h"
+#include "filter/apply_results.h"
 #include "core/vertex_result.h"
 #include "io/result_ply_format.h"
 #include "io/result_ply_reader.h"  // ReadResultPly

@@ -33,7 +33,7 @@
 #include <wrap/io_trimesh/import_off.h>
 #include <wrap/io_trimesh/import_ply.h>
 
-#include "apply/apply_results.h"
+#include "filter/apply_results.h"
 #include "core/normal_vector_voting.h"
 #include "io/result_ply.h"
 #include "sample_meshes/synthetic_shapes.h"

@@ -10,12 +10,12 @@
 #include <set>
 
 #include "../test_mesh.h"
-#include "apply/apply_results.h"
+#include "filter/apply_results.h"
 #include "core/normal_vector_voting.h"
 #include "io/result_ply_reader.h"
 #include "meshlab_runner.h"
 #include "sample_meshes/synthetic_shapes.h"
-#include "scripting/mlx_script.h"
+#include "filter/mlx_script.h"
 
 #include <wrap/io_trimesh/export_ply.h>
 

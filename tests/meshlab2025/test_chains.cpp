@@ -6,7 +6,7 @@
 #include <cmath>
 #include <functional>
 
-#include "core/filter_options.h"
+#include "filter/filter_options.h"
 #include "test_support_2025.h"
 
 using namespace nvv2025;

@@ -9,7 +9,7 @@
 #include <set>
 #include <thread>
 
-#include "apply/apply_results.h"
+#include "filter/apply_results.h"
 #include "core/normal_vector_voting.h"
 #include "io/result_ply_reader.h"
 #include "sample_meshes/synthetic_shapes.h"

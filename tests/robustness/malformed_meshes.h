@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "../test_mesh.h"
-#include "core/filter_options.h"
+#include "filter/filter_options.h"
 #include "sample_meshes/synthetic_shapes.h"
 
 namespace nvv_robust {

@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "apply/apply_results.h"
+#include "filter/apply_results.h"
 #include "core/normal_vector_voting.h"
 #include "malformed_meshes.h"
 

@@ -12,7 +12,7 @@ case "$scalar" in
   *) echo "usage: build-plugin.sh float|double" >&2; exit 2 ;;
 esac
 build=$NVV_WORK/build-$scalar
-cmake -S "$NVV_SRC/filter_normal_voting/meshlab2025" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+cmake -S "$NVV_SRC/filter_normal_voting/meshlab/v2025" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DNVV_MESHLAB_SCALAR="$scalar" -DNVV_MESHLAB_SRC="$NVV_WORK/meshlab-src" \
   -DNVV_MESHLAB_LIB_DIR="$libdir" -DNVV_MESHLAB_PLUGIN_DIR="$libdir/plugins" > "$build.configure.log" 2>&1 ||
   { cat "$build.configure.log"; exit 1; }

@@ -23,7 +23,7 @@
 #include <common/interfaces.h>
 #endif
 
-#include "core/filter_options.h"
+#include "filter/filter_options.h"
 #include "core/vertex_result.h"
 
 namespace nvv_meshlab {

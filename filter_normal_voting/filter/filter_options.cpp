@@ -1,56 +1,11 @@
-// Everything a user sets when running the filter: the algorithm's parameters (params.h)
-// plus what to write onto the mesh. The table below is the single definition of every
-// parameter's stable name, label, help text, default and range; the MeshLab dialogs (both
-// plugin APIs), the command-line tool and the tests all read it.
-//
-// Names are stable: .mlx scripts, PyMeshLab keyword arguments and CLI options use them.
-#ifndef NVV_CORE_FILTER_OPTIONS_H
-#define NVV_CORE_FILTER_OPTIONS_H
+#include "filter_options.h"
 
 #include <cmath>
 #include <cstdio>
-#include <string>
-#include <vector>
-
-#include "params.h"
 
 namespace nvv {
 
-// The filter's name in MeshLab's menus and .mlx scripts, and PyMeshLab's name for it. Stable.
-constexpr const char* kFilterName = "Normal Vector Voting: Creases, Normals and Curvature";
-constexpr const char* kPythonFilterName = "compute_normal_vector_voting";
-
-enum class QualityMode : int {
-  MeanCurvature = 0, GaussianCurvature, MaxCurvature, MinCurvature, ShapeIndex, Curvedness,
-  Class, CuspAngle, SurfaceSaliency, Keep
-};
-enum class ColorMode : int { Classes = 0, QualityRamp, Keep };
-enum class SelectionMode : int { None = 0, CreasesAndCorners, CornersOnly, SurfaceOnly };
-
-struct FilterOptions {
-  Params core;
-  bool updateNormals = true;
-  QualityMode quality = QualityMode::MeanCurvature;
-  ColorMode color = ColorMode::Classes;
-  double clampPercentile = 2.0;  // the quality ramp spans the p-th to (100-p)-th percentile
-  SelectionMode selection = SelectionMode::None;
-};
-
-enum class ParamType { Float, Int, Bool, Enum };
-
-struct ParamSpec {
-  const char* name;   // stable identifier
-  ParamType type;
-  const char* label;  // short label (MeshLab dialog)
-  const char* help;   // tooltip and --help text, in a user's words
-  double defaultValue;
-  double minValue, maxValue;         // Float / Int
-  std::vector<const char*> choices;  // Enum: labels, value = index
-  std::vector<const char*> tokens;   // Enum: short names for the command line
-  bool advanced;                     // shown in the dialog's advanced section
-};
-
-inline const std::vector<ParamSpec>& FilterParameterTable() {
+const std::vector<ParamSpec>& FilterParameterTable() {
   static const std::vector<ParamSpec> table = {
     {"neighbourhood_k", ParamType::Float, "Neighbourhood size k",
      "Radius of the geodesic neighbourhood in mean edge lengths (g_m = k * l_ave). Small k (1-2) keeps "
@@ -137,15 +92,7 @@ inline const std::vector<ParamSpec>& FilterParameterTable() {
   return table;
 }
 
-// The one parameter only the MeshLab filter has: a file to write the full-result PLY to (see
-// filter_normal_voting/io/result_ply.h), because MeshLab's own PLY writer cannot save curvature
-// directions or the per-vertex results from a script. The command-line tool always writes it.
-struct SaveFileSpec {
-  const char* name;
-  const char* label;
-  const char* help;
-};
-inline const SaveFileSpec& ResultPlyParameter() {
+const SaveFileSpec& ResultPlyParameter() {
   static const SaveFileSpec spec = {
       "save_results_ply", "Save all results to PLY (optional)",
       "If set, also writes every per-vertex result (class, eigenvalues, K1, K2, PD1, PD2, crease tangent, "
@@ -154,15 +101,13 @@ inline const SaveFileSpec& ResultPlyParameter() {
   return spec;
 }
 
-inline const ParamSpec* FindParam(const std::string& name) {
+const ParamSpec* FindParam(const std::string& name) {
   for (const auto& p : FilterParameterTable())
     if (name == p.name) return &p;
   return nullptr;
 }
 
-// Sets option `name` from a number (Bool: 0/1, Enum: index). Returns an error sentence, or
-// empty when set. Values outside the table's range are refused here, not clamped.
-inline std::string SetOption(FilterOptions& o, const std::string& name, double value) {
+std::string SetOption(FilterOptions& o, const std::string& name, double value) {
   const ParamSpec* spec = FindParam(name);
   if (!spec) return "Unknown parameter '" + name + "'.";
   if (!std::isfinite(value)) return std::string("Parameter '") + spec->name + "' is not a finite number.";
@@ -200,8 +145,7 @@ inline std::string SetOption(FilterOptions& o, const std::string& name, double v
   return std::string();
 }
 
-// The value of option `name` as SetOption takes it (Bool: 0/1, Enum: index); NaN if unknown.
-inline double GetOption(const FilterOptions& o, const std::string& name) {
+double GetOption(const FilterOptions& o, const std::string& name) {
   if (name == "neighbourhood_k") return o.core.k;
   if (name == "absolute_radius") return o.core.absoluteRadius;
   if (name == "crease_angle") return o.core.creaseAngleDeg;
@@ -221,15 +165,13 @@ inline double GetOption(const FilterOptions& o, const std::string& name) {
   return std::nan("");
 }
 
-// Options with every parameter at its table default.
-inline FilterOptions DefaultOptions() {
+FilterOptions DefaultOptions() {
   FilterOptions o;
   for (const auto& p : FilterParameterTable()) SetOption(o, p.name, p.defaultValue);
   return o;
 }
 
-// Empty when the options can run; otherwise the reason, in a user's words.
-inline std::string ValidateOptions(const FilterOptions& o) {
+std::string ValidateOptions(const FilterOptions& o) {
   std::string e = ValidateParams(o.core);
   if (!e.empty()) return e;
   if (!std::isfinite(o.clampPercentile) || o.clampPercentile < 0 || o.clampPercentile > 49)
@@ -238,5 +180,3 @@ inline std::string ValidateOptions(const FilterOptions& o) {
 }
 
 }  // namespace nvv
-
-#endif

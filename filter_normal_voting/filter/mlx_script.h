@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "core/filter_options.h"
+#include "filter/filter_options.h"
 
 namespace nvv {
 

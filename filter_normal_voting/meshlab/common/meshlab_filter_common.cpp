@@ -2,12 +2,7 @@
 
 #include <vcg/complex/algorithms/update/selection.h>
 
-#include <QFileInfo>
-#include <new>
-
-#include "apply/apply_results.h"
-#include "core/normal_vector_voting.h"
-#include "io/result_ply.h"
+#include "filter/run_filter.h"
 
 namespace nvv_meshlab {
 
@@ -81,24 +76,6 @@ int OutputMask() {
 
 Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& resultPly, vcg::CallBackPos* cb) {
   Outcome out;
-  CMeshO& m = mm.cm;
-  if (!resultPly.isEmpty()) {  // refuse an unwritable destination before any work
-    const QFileInfo dir(QFileInfo(resultPly).absolutePath());
-    if (!dir.isDir() || !dir.isWritable() || QFileInfo(resultPly).isDir()) {
-      out.error = QStringLiteral("Normal Vector Voting: cannot write the results PLY '%1' (its folder is missing or not "
-                                 "writable). The mesh was not changed.").arg(resultPly);
-      return out;
-    }
-  }
-  if (m.vn == 0) {
-    out.error = QStringLiteral("Normal Vector Voting: the mesh is empty.");
-    return out;
-  }
-  if (m.fn == 0) {
-    out.error = QStringLiteral("Normal Vector Voting: the mesh has no faces (a point cloud?). "
-                               "It needs a triangle mesh: reconstruct a surface first.");
-    return out;
-  }
   nvv::Progress progress;
 #ifdef NVV_MESHLAB_API_2025
   // 2022.02+ ignores the callback's result (no cancelling); PyMeshLab's may return false.
@@ -106,48 +83,37 @@ Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& res
 #else
   if (cb) progress = [cb](int pos, const char* text) { return cb(pos, text); };
 #endif
-  std::vector<nvv::VertexResult> res;
-  nvv::Status st;
-  try {  // the compact graph and the results of a huge mesh may not fit: refuse, never throw into MeshLab
-    st = vcg::tri::NormalVectorVoting<CMeshO>::Compute(m, options.core, res, out.summary, progress);
-  } catch (const std::bad_alloc&) {
-    st = nvv::Status();
-    st.message = "Out of memory: the mesh's working copy and results did not fit.";
-    res.clear();
-  }
-  if (!st.ok) {
-    out.error = QStringLiteral("Normal Vector Voting: ") + QString::fromStdString(st.message) +
-                (st.cancelled ? QString() : QStringLiteral(" The mesh was not changed."));
+  nvv::RunRequest request;
+  request.options = options;
+  request.resultPly = resultPly.toStdString();
+  // Only once the results exist is the mesh touched: enable the components they are written to.
+  auto enable = [&mm](const nvv::ApplyResults<CMeshO>::Needs& needs) {
+    int mask = MeshModel::MM_VERTCURVDIR;
+    if (needs.quality) mask |= MeshModel::MM_VERTQUALITY;
+    if (needs.color) mask |= MeshModel::MM_VERTCOLOR;
+    mm.updateDataMask(mask);
+  };
+  const nvv::RunOutcome run = nvv::RunFilter(mm.cm, request, progress, enable);
+  out.summary = run.summary;
+  if (!run.meshChanged) {
+    out.error = QStringLiteral("Normal Vector Voting: ") + QString::fromStdString(run.error) +
+                (run.failure == nvv::RunOutcome::kCancelled ? QString() : QStringLiteral(" The mesh was not changed."));
     return out;
   }
-  // Only now is the mesh touched: enable the components and write every output.
-  const auto needs = nvv::ApplyResults<CMeshO>::NeedsFor(options);
-  int mask = MeshModel::MM_VERTCURVDIR;
-  if (needs.quality) mask |= MeshModel::MM_VERTQUALITY;
-  if (needs.color) mask |= MeshModel::MM_VERTCOLOR;
-  mm.updateDataMask(mask);
-  nvv::ApplyResults<CMeshO>::Apply(m, res, options);
   // MeshLab's selection filters (Delete Selected Vertices, Laplacian "selected only", ...) trust
   // the mesh's count of selected vertices, so keep it true.
+  CMeshO& m = mm.cm;
   if (options.selection != nvv::SelectionMode::None) m.svn = int(vcg::tri::UpdateSelection<CMeshO>::VertexCount(m));
   if (cb) cb(100, "Normal vector voting: done");
-
   out.ok = true;
   if (!resultPly.isEmpty()) {
-    std::string err;
-    if (nvv::WriteResultPly(resultPly.toStdString(), m, res, true, err))
+    if (run.Ok())
       out.log << QStringLiteral("Normal vector voting: all results written to %1").arg(resultPly);
     else
-      out.log << QStringLiteral("Normal vector voting: warning: could not write %1: %2").arg(resultPly, QString::fromStdString(err));
+      out.log << QStringLiteral("Normal vector voting: warning: ") + QString::fromStdString(run.error);
   }
-  out.log << QString::fromStdString(nvv::SummaryLine(out.summary));
-  out.log << QStringLiteral("Normal vector voting: neighbourhood k = %1 mean edge lengths -> absolute radius %2; "
-                            "crease angle %3 deg (epsilon %4), corner angle %5 deg (eta %6)%7")
-                 .arg(options.core.k).arg(out.summary.radius)
-                 .arg(options.core.creaseAngleDeg).arg(out.summary.epsilon, 0, 'g', 4)
-                 .arg(options.core.cornerAngleDeg).arg(out.summary.eta, 0, 'g', 4)
-                 .arg(out.summary.signAwareUsed ? QStringLiteral(", sign-aware rule") : QStringLiteral(", paper's rule"));
-  for (const auto& w : out.summary.warnings) out.log << QStringLiteral("Normal vector voting: warning: ") + QString::fromStdString(w);
+  for (const auto& line : run.log) out.log << QString::fromStdString(line);
+  for (const auto& w : run.warnings) out.log << QStringLiteral("Normal vector voting: warning: ") + QString::fromStdString(w);
   return out;
 }
 

@@ -19,7 +19,7 @@
 
 #include <vcg/complex/complex.h>
 
-#include "core/filter_options.h"
+#include "filter/filter_options.h"
 #include "core/vertex_result.h"
 
 namespace nvv {

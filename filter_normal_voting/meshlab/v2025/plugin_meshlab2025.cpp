@@ -1,6 +1,6 @@
 #include "plugin_meshlab2025.h"
 
-#include "meshlab/meshlab_filter_common.h"
+#include "meshlab/common/meshlab_filter_common.h"
 
 NormalVectorVotingPlugin::NormalVectorVotingPlugin() {
   typeList = {FP_NORMAL_VECTOR_VOTING};

@@ -1,0 +1,328 @@
+#include "crease_thinning.h"
+
+#include <cmath>
+#include <cstdint>
+
+#include "ball_flood.h"
+#include "huge_pages.h"
+#include "ridge_fit.h"
+#include "tangent_frame.h"
+#include "tuning.h"
+
+namespace nvv {
+namespace {
+
+using tuning::kCosAcrossLine;
+using tuning::kCosSameLine;
+
+// True when a one-ring neighbour u of v with a score (score(u) > 0; ties go to the lower index,
+// so two equal neighbours do not remove each other) at least v's lies across v's line T (the
+// edge v->u at least 37 deg from T: |cos| < cosAcross). A neighbour whose own line (lineOf(u);
+// zero when it has none) is more than 45 deg off T lies on another crease (two creases meeting
+// at a corner) and is not compared. With T zero (a corner) every stronger neighbour counts: a
+// corner must be the strongest feature of its one-ring.
+template <class Score, class Line>
+bool StrongerNeighbourAcross(const SurfaceGraph& g, int v, const Eigen::Vector3d& T, Score score, Line lineOf,
+                             double cosAcross = kCosAcrossLine) {
+  const float mine = score(v);
+  for (int i = g.FaceBegin(v); i < g.FaceEnd(v); ++i)
+    for (int u : g.face[g.vfList[i]]) {
+      if (u == v) continue;
+      const float theirs = score(u);
+      if (!(theirs > 0) || theirs < mine || (theirs == mine && u > v)) continue;
+      if (T.squaredNorm() == 0) return true;
+      const Eigen::Vector3d Tu = lineOf(u);
+      if (Tu.squaredNorm() > 0 && std::abs(Tu.dot(T)) < kCosSameLine) continue;
+      if (std::abs((g.pos[u] - g.pos[v]).normalized().dot(T)) < cosAcross) return true;
+    }
+  return false;
+}
+
+// True when feature vertex v is not the ridge of its band, scored by FeatureStrength.
+bool OffRidge(const SurfaceGraph& g, const std::vector<VertexResult>& res, int v) {
+  const Eigen::Vector3d T = res[v].cls == VertexClass::Crease ? ToVec(res[v].creaseTangent) : Eigen::Vector3d::Zero();
+  return StrongerNeighbourAcross(g, v, T,
+      [&](int u) { return IsFeature(res[u]) ? std::max(FeatureStrength(res[u]), 1e-30f) : 0.0f; },
+      [&](int u) { return res[u].cls == VertexClass::Crease ? ToVec(res[u].creaseTangent) : Eigen::Vector3d::Zero(); });
+}
+
+// True when CREASE vertex v lies on a crease of the mesh itself: at least two of its edges
+// (v, x) run along v's crease tangent and have faces whose normals are more than the sharp angle
+// apart (cosSharp). Two aligned edges are required so that a noisy flank's one odd edge does not
+// veto its thinning. Corners are never vetoed.
+bool OnSharpEdge(const SurfaceGraph& g, const std::vector<VertexResult>& res, int v, double cosSharp) {
+  if (res[v].cls != VertexClass::Crease) return false;
+  const Eigen::Vector3d T = ToVec(res[v].creaseTangent);
+  int sharp = 0;
+  for (int i = g.FaceBegin(v); i < g.FaceEnd(v); ++i) {
+    const int f = g.vfList[i];
+    if (!(g.faceArea[f] > 0)) continue;
+    for (int x : g.face[f]) {
+      if (x == v || !(std::abs((g.pos[x] - g.pos[v]).normalized().dot(T)) > kCosAcrossLine)) continue;
+      const int third = g.face[f][0] + g.face[f][1] + g.face[f][2] - v - x;
+      g.ForEachFaceAcross(f, v, x, [&](int o) {  // each face pair once, from its lower face
+        const auto& t = g.face[o];
+        const bool duplicate = t[0] == third || t[1] == third || t[2] == third;  // f again: no edge neighbour
+        if (o > f && !duplicate && g.faceArea[o] > 0 && g.faceNormal[f].dot(g.faceNormal[o]) < cosSharp) ++sharp;
+      });
+      if (sharp >= 2) return true;
+    }
+  }
+  return false;
+}
+
+// Median over the mesh's interior edges of the angle (radians) between the normals of the two
+// faces sharing it: 0 on a clean CAD mesh, a few degrees on a noisy scan. Estimated from the
+// edges of a bounded number of evenly spread faces.
+double MedianEdgeAngle(const SurfaceGraph& g) {
+  std::vector<float> angles;
+  const int stride = std::max(1, g.FaceCount() / tuning::kMedianEdgeAngleFaces);
+  for (int f = 0; f < g.FaceCount(); f += stride) {
+    if (!(g.faceArea[f] > 0)) continue;
+    for (int j = 0; j < 3; ++j)
+      g.ForEachFaceAcross(f, g.face[f][j], g.face[f][(j + 1) % 3], [&](int o) {  // each edge once, from its lower face
+        if (o > f && g.faceArea[o] > 0)
+          angles.push_back(float(std::acos(std::max(-1.0, std::min(1.0, g.faceNormal[f].dot(g.faceNormal[o]))))));
+      });
+  }
+  if (angles.empty()) return 0;
+  std::nth_element(angles.begin(), angles.begin() + angles.size() / 2, angles.end());
+  return angles[angles.size() / 2];
+}
+
+// cos of the angle above which a mesh edge is sharp: the crease angle, or a multiple of the
+// median edge angle on noisy meshes (tuning.h).
+double CosSharpEdgeAngle(const SurfaceGraph& g, double creaseAngleDeg) {
+  const double sharpAngle = std::max(DegToRad(creaseAngleDeg), tuning::kSharpOverMedianEdgeAngle * MedianEdgeAngle(g));
+  return std::cos(std::min(sharpAngle, DegToRad(tuning::kSharpAngleMaxDeg)));
+}
+
+// Makes feature vertex v a SURFACE vertex whose normal restarts from its one-ring's (off the
+// ridge its faces lie on one sheet, while pass 1's E1 there mixes both); returns 1, or 0 when v
+// has no one-ring normal (then it stays as it is).
+int DemoteToSurface(const SurfaceGraph& g, VertexResult& r, int v) {
+  Eigen::Vector3d ring = g.RingNormalSum(v);
+  if (!(ring.squaredNorm() > 0)) return 0;
+  ring.normalize();
+  for (int j = 0; j < 3; ++j) r.normal[j] = float(ring[j]);
+  r.cls = VertexClass::Surface;
+  r.flags = std::uint8_t((r.flags & ~kCreaseValid) | kNormalValid);
+  for (int j = 0; j < 3; ++j) r.creaseTangent[j] = 0;
+  r.cuspAngle = 0;
+  return 1;
+}
+
+// True when ridge candidate v is not the ridge of its band: a one-ring candidate across v's
+// fitted line whose own line is within 45 deg of v's has a larger F.
+bool OffFittedRidge(const SurfaceGraph& g, const std::vector<RidgeScore>& ridge, int v) {
+  auto line = [&](int u) { return ToVec(ridge[u].tangent.data()); };
+  return StrongerNeighbourAcross(g, v, line(v), [&](int u) { return ridge[u].F; }, line);
+}
+
+// What the ridge-fit form does with a feature vertex.
+enum RidgeAction : std::uint8_t { kKeep = 0, kDemote = 1, kCornerToCrease = 2 };
+
+// Keep a feature vertex where it is on a sharp mesh edge, or where its ridge fit found a kink,
+// no candidate across its line has a larger F, and no sharp-edge crease lies across it within
+// 45 deg of its line (it is that crease's flank). A kept corner that is not the strongest
+// feature of its one-ring becomes a crease along its fitted line.
+std::vector<std::uint8_t> RidgeActions(const SurfaceGraph& g, const std::vector<VertexResult>& res,
+                                       const std::vector<RidgeScore>& ridge, int threads, double cosSharp) {
+  const int n = g.VertexCount();
+  std::vector<std::uint8_t> sharp(n, 0);
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (int v = 0; v < n; ++v)
+    if (IsFeature(res[v])) sharp[v] = OnSharpEdge(g, res, v, cosSharp);
+  auto lineOf = [&](int u) { return ridge[u].F > 0 ? ToVec(ridge[u].tangent.data()) : ToVec(res[u].creaseTangent); };
+  auto sharpScore = [&](int u) { return sharp[u] ? 1.0f : 0.0f; };
+  std::vector<std::uint8_t> action(n, kKeep);
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (int v = 0; v < n; ++v) {
+    if (!IsFeature(res[v])) continue;
+    const bool ridgeHere = ridge[v].F > 0;
+    const bool keep = sharp[v] || (ridgeHere && !OffFittedRidge(g, ridge, v) &&
+                                   !StrongerNeighbourAcross(g, v, lineOf(v), sharpScore, lineOf, kCosSameLine));
+    if (!keep) action[v] = kDemote;
+    else if (res[v].cls == VertexClass::Corner && OffRidge(g, res, v)) action[v] = kCornerToCrease;
+  }
+  return action;
+}
+
+// Where two fitted ridges meet (a cube's corner) the fit of the meeting vertex sees three sheets
+// and loses to its neighbours: a vertex to demote that lies on the lines of two kept crease
+// neighbours more than 45 deg apart is kept as a corner.
+std::vector<std::uint8_t> CornersWhereRidgesMeet(const SurfaceGraph& g, const std::vector<VertexResult>& res,
+                                                 const std::vector<RidgeScore>& ridge,
+                                                 const std::vector<std::uint8_t>& action, int threads) {
+  const int n = g.VertexCount();
+  std::vector<std::uint8_t> corner(n, 0);
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (int v = 0; v < n; ++v) {
+    if (action[v] != kDemote) continue;
+    Eigen::Vector3d first = Eigen::Vector3d::Zero();
+    for (int i = g.FaceBegin(v); i < g.FaceEnd(v) && !corner[v]; ++i)
+      for (int u : g.face[g.vfList[i]]) {
+        if (u == v || action[u] == kDemote || res[u].cls != VertexClass::Crease || !(ridge[u].F > 0)) continue;
+        const Eigen::Vector3d T = ToVec(ridge[u].tangent.data());
+        if (std::abs((g.pos[v] - g.pos[u]).normalized().dot(T)) < kCosAcrossLine) continue;  // v is not on u's line
+        if (first.squaredNorm() == 0) first = T;
+        else if (std::abs(first.dot(T)) < kCosSameLine) { corner[v] = 1; break; }
+      }
+  }
+  return corner;
+}
+
+// The scratch of one thread of ScoreRidges.
+struct RidgeScratch {
+  explicit RidgeScratch(const SurfaceGraph& g) : flood(g) {}
+  BallFlood flood;
+  std::vector<Eigen::Vector3d> xyz;
+};
+
+// The better of two ridge fits at v: in the frame of pass 1's normal, and of the ball's mean
+// normal (the bisector of a crease's two sheets; in the frame of one sheet's normal, which pass
+// 1's E1 often is, the other sheet of a 90 deg crease is vertical).
+RidgeFitResult StrongerRidgeFit(const SurfaceGraph& g, const VertexResult& r, int v, double floorRss, RidgeScratch& sc) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int x : sc.flood.Reached()) mean += g.RingNormalSum(x);
+  RidgeFitResult fit;
+  for (const Eigen::Vector3d& axis : {ToVec(r.normal), mean}) {
+    if (!(axis.squaredNorm() > 0)) continue;
+    const TangentFrame F(axis.normalized());
+    sc.xyz.clear();
+    for (int x : sc.flood.Reached()) {
+      const Eigen::Vector3d d = g.pos[x] - g.pos[v];
+      sc.xyz.emplace_back(F.e1.dot(d), F.e2.dot(d), F.n.dot(d));
+    }
+    const RidgeFitResult f = FitRidge(F, sc.xyz, floorRss * double(sc.xyz.size()));
+    if (f.ok && (!fit.ok || f.F > fit.F)) fit = f;
+  }
+  return fit;
+}
+
+}  // namespace
+
+PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res, const Pass1Settings& s,
+                    double creaseAngleDeg, int threads, PassProgress& progress, std::vector<RidgeScore>& ridge) {
+  AssignOnHugePages(ridge, g.VertexCount());
+  const double floorRss = tuning::kRidgeResidualFloor * g.meanEdge * g.meanEdge;
+  const double phi = DegToRad(creaseAngleDeg);
+  const double ridgeRadius =
+      std::min(std::max(s.radius, tuning::kRidgeRadiusMin * g.meanEdge), tuning::kRidgeRadiusMax * g.meanEdge);
+  return ParallelOverVertices<RidgeScratch>(g, threads, progress, [&](int v, RidgeScratch& sc) {
+    if (!IsFeature(res[v])) return;
+    sc.flood.Run(v, ridgeRadius, s.maxNeighbourhood);
+    const RidgeFitResult fit = StrongerRidgeFit(g, res[v], v, floorRss, sc);
+    if (!fit.ok || fit.alphaRad < phi || fit.F < tuning::kRidgeMinF) return;
+    ridge[v].F = float(fit.F);
+    ridge[v].alphaRad = float(fit.alphaRad);
+    for (int j = 0; j < 3; ++j) ridge[v].tangent[j] = float(fit.tangent[j]);
+  });
+}
+
+PassEnd ThinCreases(const SurfaceGraph& g, const Params& p, const Pass1Settings& s, int threads,
+                    PassProgress& progress, std::vector<VertexResult>& res, std::size_t& thinned) {
+  thinned = 0;
+  if (!p.thinCreases) return PassEnd::Done;
+  if (!p.ridgeFit) {
+    thinned = ThinCreaseBand(g, res, threads, p.creaseAngleDeg);
+    return PassEnd::Done;
+  }
+  std::vector<RidgeScore> ridge;
+  const PassEnd end = ScoreRidges(g, res, s, p.creaseAngleDeg, threads, progress, ridge);
+  if (end != PassEnd::Done) return end;
+  thinned = ThinCreaseBandByRidgeFit(g, res, ridge, threads, p.creaseAngleDeg);
+  return PassEnd::Done;
+}
+
+std::size_t ThinCreaseBand(const SurfaceGraph& g, std::vector<VertexResult>& res, int threads, double creaseAngleDeg) {
+  const int n = g.VertexCount();
+  const double cosSharp = CosSharpEdgeAngle(g, creaseAngleDeg);
+  std::vector<std::uint8_t> demote(n, 0);
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (int v = 0; v < n; ++v)
+    if (IsFeature(res[v])) demote[v] = OffRidge(g, res, v) && !OnSharpEdge(g, res, v, cosSharp);
+  std::size_t count = 0;
+  for (int v = 0; v < n; ++v) {
+    if (demote[v]) count += DemoteToSurface(g, res[v], v);
+  }
+  return count;
+}
+
+std::size_t CloseCreaseGaps(const SurfaceGraph& g, std::vector<VertexResult>& res, const std::vector<RidgeScore>& ridge,
+                            int threads) {
+  const int n = g.VertexCount();
+  // True when u is a kept ridge crease and v lies on its line; d: the unit edge v -> u.
+  auto onLineOf = [&](int v, int u, Eigen::Vector3d& d) {
+    if (u == v || res[u].cls != VertexClass::Crease || !(ridge[u].F > 0)) return false;
+    d = (g.pos[u] - g.pos[v]).normalized();
+    return std::abs(d.dot(ToVec(ridge[u].tangent.data()))) > kCosAcrossLine;
+  };
+  // The gap's two ends, or -1.
+  std::vector<std::array<int, 2>> ends(n, std::array<int, 2>{{-1, -1}});
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (int v = 0; v < n; ++v) {
+    if (res[v].cls != VertexClass::Surface || !g.usable[v]) continue;
+    for (int i = g.FaceBegin(v); i < g.FaceEnd(v) && ends[v][0] < 0; ++i)
+      for (int a : g.face[g.vfList[i]]) {
+        Eigen::Vector3d da, db;
+        if (!onLineOf(v, a, da)) continue;
+        const Eigen::Vector3d Ta = ToVec(ridge[a].tangent.data());
+        for (int j = g.FaceBegin(v); j < g.FaceEnd(v) && ends[v][0] < 0; ++j)
+          for (int b : g.face[g.vfList[j]])
+            if (b != a && onLineOf(v, b, db) && da.dot(db) < -kCosAcrossLine &&
+                std::abs(Ta.dot(ToVec(ridge[b].tangent.data()))) > kCosSameLine) {
+              ends[v] = {{a, b}};
+              break;
+            }
+        if (ends[v][0] >= 0) break;
+      }
+  }
+  std::size_t closed = 0;
+  for (int v = 0; v < n; ++v) {
+    const int a = ends[v][0], b = ends[v][1];
+    if (a < 0) continue;
+    VertexResult& r = res[v];
+    r.cls = VertexClass::Crease;
+    r.flags |= kCreaseValid | kNormalValid;
+    const Eigen::Vector3d t = (g.pos[b] - g.pos[a]).normalized();
+    for (int j = 0; j < 3; ++j) r.creaseTangent[j] = float(t[j]);
+    r.cuspAngle = 0.5f * (ridge[a].alphaRad + ridge[b].alphaRad);
+    ++closed;
+  }
+  return closed;
+}
+
+std::size_t ThinCreaseBandByRidgeFit(const SurfaceGraph& g, std::vector<VertexResult>& res,
+                                     const std::vector<RidgeScore>& ridge, int threads, double creaseAngleDeg) {
+  const int n = g.VertexCount();
+  const std::vector<std::uint8_t> action = RidgeActions(g, res, ridge, threads, CosSharpEdgeAngle(g, creaseAngleDeg));
+  const std::vector<std::uint8_t> corner = CornersWhereRidgesMeet(g, res, ridge, action, threads);
+  std::size_t count = 0;
+  for (int v = 0; v < n; ++v) {
+    VertexResult& r = res[v];
+    if (action[v] == kKeep && r.cls == VertexClass::Crease && ridge[v].F > 0) {
+      for (int j = 0; j < 3; ++j) r.creaseTangent[j] = ridge[v].tangent[j];
+      continue;
+    }
+    if (action[v] == kCornerToCrease) {
+      r.cls = VertexClass::Crease;
+      r.flags |= kCreaseValid | kNormalValid;
+      for (int j = 0; j < 3; ++j) r.creaseTangent[j] = ridge[v].tangent[j];
+      r.cuspAngle = ridge[v].alphaRad;
+      continue;
+    }
+    if (action[v] != kDemote) continue;
+    if (corner[v]) {
+      r.cls = VertexClass::Corner;
+      r.flags = std::uint8_t(r.flags & ~(kCreaseValid | kNormalValid));
+      continue;
+    }
+    count += DemoteToSurface(g, r, v);
+  }
+  // Net: what thinning took from pass 1's features, so features with and without it differ by it.
+  const std::size_t closed = CloseCreaseGaps(g, res, ridge, threads);
+  return count > closed ? count - closed : 0;
+}
+
+}  // namespace nvv

@@ -1,0 +1,175 @@
+#include "surface_curvature.h"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "ball_flood.h"
+#include "curvature_votes.h"
+#include "geodesic_march.h"
+#include "huge_pages.h"
+#include "sheet_fit.h"
+#include "tangent_frame.h"
+#include "tuning.h"
+
+namespace nvv {
+namespace {
+
+// A thread's scratch. The flood (quadric fit) and the march (the paper's vote forms) each hold
+// O(n) state; a pass allocates only the one its form uses.
+struct Pass2Scratch {
+  explicit Pass2Scratch(const SurfaceGraph& graph) : g(graph) {}
+  BallFlood& Flood() {
+    if (!flood) flood.reset(new BallFlood(g));
+    return *flood;
+  }
+  GeodesicMarch& March() {
+    if (!march) march.reset(new GeodesicMarch(g));
+    return *march;
+  }
+  const SurfaceGraph& g;
+  std::unique_ptr<BallFlood> flood;
+  std::unique_ptr<GeodesicMarch> march;
+  std::vector<CurvatureVote> votes;
+  std::vector<SheetSample> samples;
+};
+
+typedef std::vector<std::array<float, 3>> NormalArray;
+
+// What one pass of pass 2 reads.
+struct CurvatureRound {
+  const SurfaceGraph& g;
+  const Params& p;
+  const Pass1Settings& s;
+  std::vector<VertexResult>& out;  // pass-1 classes and normals; each vertex writes only its own
+  const NormalArray* previous;     // the previous round's fitted normals; null in the first round
+  const std::vector<std::uint8_t>& onBorder;  // empty where no fit may take the cubic
+  double cosPhi, slopeWeight, nearBorder2;
+  bool last;
+
+  // The normal this round's fit uses for vertex x: pass 1's, then the previous round's.
+  Eigen::Vector3d NormalOf(int x) const {
+    return previous == nullptr ? ToVec(out[x].normal) : ToVec((*previous)[x].data());
+  }
+  bool NotSurface(int x) const { return out[x].cls != VertexClass::Surface; }
+};
+
+// The quadric fit of v over its same-sheet ball. The fit needs the ball but no distances, so the
+// flood finds it (ball_flood.h). A fit whose ball reaches a crease, or whose border is within
+// tuning::kBorderCubicFraction of g_m, is one-sided and gets no cubic.
+PrincipalCurvatures FitByQuadric(const CurvatureRound& R, int v, const TangentFrame& F, Pass2Scratch& sc,
+                                 bool& capped) {
+  const SurfaceGraph& g = R.g;
+  BallFlood& flood = sc.Flood();
+  capped = !(R.p.stopAtCreases ? flood.Run(v, R.s.radius, R.s.maxNeighbourhood, [&](int x) { return R.NotSurface(x); })
+                               : flood.Run(v, R.s.radius, R.s.maxNeighbourhood));
+  sc.samples.clear();
+  bool oneSided = false;
+  for (int x : flood.Reached()) {
+    if (R.NotSurface(x)) { oneSided = true; continue; }
+    if (!R.onBorder.empty() && R.onBorder[x] && (g.pos[x] - g.pos[v]).squaredNorm() < R.nearBorder2) oneSided = true;
+    sc.samples.push_back({g.pos[x] - g.pos[v], R.NormalOf(x)});
+  }
+  return SheetQuadricFit(F, sc.samples, R.s.radius, R.slopeWeight, R.cosPhi, R.p.cubicFit && !oneSided, !R.last,
+                         R.p.levers);
+}
+
+// The paper's curvature votes (Eq. 13-17) of v's geodesic neighbourhood, as Taubin's matrix or
+// Euler's least squares.
+PrincipalCurvatures FitByVotes(const CurvatureRound& R, int v, const TangentFrame& F, Pass2Scratch& sc, bool& capped) {
+  const SurfaceGraph& g = R.g;
+  GeodesicMarch& march = sc.March();
+  capped = !(R.p.stopAtCreases ? march.Run(v, R.s.radius, R.s.maxNeighbourhood, [&](int x) { return R.NotSurface(x); })
+                               : march.Run(v, R.s.radius, R.s.maxNeighbourhood));
+  sc.votes.clear();
+  for (int x : march.Reached()) {
+    if (x == v || R.NotSurface(x)) continue;
+    const double gi = march.Distance(x);
+    CurvatureVote vote;
+    if (CurvatureVoteOf(F, g.pos[x] - g.pos[v], ToVec(R.out[x].normal), gi, VoteWeight(gi, R.s.sigma), vote))
+      sc.votes.push_back(vote);
+  }
+  return R.p.fit == CurvatureFit::PaperTaubin ? TaubinFromVotes(F, sc.votes) : EulerFromVotes(F, sc.votes);
+}
+
+// Vertices on the mesh's border (an edge of one face), where the cubic may be taken; empty
+// where it never is.
+std::vector<std::uint8_t> BorderVertices(const SurfaceGraph& g, const Params& p, int threads) {
+  std::vector<std::uint8_t> onBorder;
+  if (p.fit == CurvatureFit::SheetQuadric && p.cubicFit) {
+    AssignOnHugePages(onBorder, g.VertexCount(), std::uint8_t(0));
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+    for (int v = 0; v < g.VertexCount(); ++v) onBorder[v] = g.OnBorder(v);
+  }
+  return onBorder;
+}
+
+// One pass over the surface vertices: a fit round of the quadric fit (writing the fitted normal
+// to `fitted` in rounds before the last) or the paper's votes.
+PassEnd CurvaturePass(const CurvatureRound& R, int threads, PassProgress& progress, NormalArray* fitted) {
+  return ParallelOverVertices<Pass2Scratch>(R.g, threads, progress, [&](int v, Pass2Scratch& sc) {
+    VertexResult& r = R.out[v];
+    if (r.cls != VertexClass::Surface) return;
+    const Eigen::Vector3d Nv = R.NormalOf(v).normalized();
+    const TangentFrame F(Nv);
+    bool capped = false;
+    const bool quadric = R.p.fit == CurvatureFit::SheetQuadric;
+    const PrincipalCurvatures pc = quadric ? FitByQuadric(R, v, F, sc, capped) : FitByVotes(R, v, F, sc, capped);
+    if (capped) r.flags |= kNeighbourhoodCapped;
+    if (quadric && !R.last) {  // hand the fitted normal (or, if the fit failed, this round's) to the next round
+      const Eigen::Vector3d n = pc.ok ? pc.normal : Nv;
+      for (int j = 0; j < 3; ++j) (*fitted)[v][j] = float(n[j]);
+      return;
+    }
+    if (!pc.ok) return;
+    r.k1 = float(pc.k1);
+    r.k2 = float(pc.k2);
+    for (int j = 0; j < 3; ++j) {
+      r.t1[j] = float(pc.t1[j]);
+      r.t2[j] = float(pc.t2[j]);
+    }
+    r.flags |= kCurvatureValid;
+  });
+}
+
+// The quadric fit's refined normal, t1 x t2, written once every round is done.
+void WriteFittedNormals(std::vector<VertexResult>& out) {
+  for (auto& r : out) {
+    if (!r.Has(kCurvatureValid)) continue;
+    const Eigen::Vector3d n = ToVec(r.t1).cross(ToVec(r.t2)).normalized();
+    for (int j = 0; j < 3; ++j) r.normal[j] = float(n[j]);
+  }
+}
+
+}  // namespace
+
+int CurvatureRounds(const Params& p) { return p.fit == CurvatureFit::SheetQuadric ? p.fitRounds : 1; }
+
+PassEnd FitSurfaceCurvature(const SurfaceGraph& g, const Params& p, const Pass1Settings& s, int threads,
+                            const Progress& cb, int firstPercent, int perRound, std::vector<VertexResult>& out) {
+  const int rounds = CurvatureRounds(p);
+  const std::vector<std::uint8_t> onBorder = BorderVertices(g, p, threads);
+  const double nearBorder = tuning::kBorderCubicFraction * s.radius;
+  // Two rounds need one normal array (12 bytes per vertex): the last round writes no normals.
+  NormalArray previous, fitted;
+  for (int round = 0; round < rounds; ++round) {
+    const bool last = round == rounds - 1;
+    if (!last) AssignOnHugePages(fitted, g.VertexCount());
+    const CurvatureRound R{g, p, s, out, round == 0 ? nullptr : &previous, onBorder,
+                           std::cos(DegToRad(p.creaseAngleDeg)), tuning::kSlopeWeightEdges * g.meanEdge,
+                           nearBorder * nearBorder, last};
+    const std::string text = rounds == 1 ? std::string("Normal vector voting: curvature")
+        : "Normal vector voting: curvature, fit " + std::to_string(round + 1) + " of " + std::to_string(rounds);
+    PassProgress progress(cb, g.VertexCount(), firstPercent + perRound * round,
+                          last ? 100 : firstPercent + perRound * (round + 1), text.c_str());
+    const PassEnd end = CurvaturePass(R, threads, progress, &fitted);
+    if (end != PassEnd::Done) return end;
+    if (!last) previous.swap(fitted);
+  }
+  if (p.fit == CurvatureFit::SheetQuadric) WriteFittedNormals(out);
+  return PassEnd::Done;
+}
+
+}  // namespace nvv

@@ -1,0 +1,101 @@
+// Every tuned constant of the core, in one place: what it decides, and the measurement that
+// chose it. "F1" is vertex-level crease F1, "near creases" the surface vertices 0.5-3 l_ave from
+// a crease, both from the accuracy benchmark (docs/accuracy.md, bench/); k = 3 unless stated.
+// The paper's own constants (sigma = g_m / 3, epsilon and eta from the user's angles) are
+// parameters (params.h), not tuning.
+#ifndef NVV_CORE_TUNING_H
+#define NVV_CORE_TUNING_H
+
+namespace nvv {
+namespace tuning {
+
+// --- Neighbourhoods --------------------------------------------------------------------------
+
+// Automatic neighbourhood cap: this many times k^2 vertices (a uniform triangulation holds about
+// 3.6 k^2 within g_m = k l_ave, so regions four times denser than average stay whole) ...
+constexpr double kAutoCapPerK2 = 16.0;
+// ... and never fewer than this (small k on irregular meshes) nor more than kMaxCap.
+constexpr int kAutoCapMin = 1024;
+constexpr int kMaxCap = 10000000;
+
+// --- Degenerate input --------------------------------------------------------------------------
+
+// A face is degenerate (no normal, no vote) when its area is below this times l_ave^2: a
+// scale-free zero test.
+constexpr double kDegenerateAreaFraction = 1e-12;
+
+// --- Crease ridges (ridge_fit.h, crease_thinning.h) -------------------------------------------
+
+// The kink's F statistic a ridge must reach: three standard deviations of a kink that is noise.
+constexpr double kRidgeMinF = 9.0;
+// The ridge fit's ball, in l_ave, clamped to [min, max] around g_m: a smaller ball holds too few
+// heights for the fit's four unknowns; in a larger one a curved ridge (the capped cylinder's
+// rims at k = 5) is no longer a straight line.
+constexpr double kRidgeRadiusMin = 2.0;
+constexpr double kRidgeRadiusMax = 3.0;
+// The ridge fit's smallest residual that counts, times l_ave^2 per sample (clean meshes' exact
+// fits give ~0, and F must stay finite).
+constexpr double kRidgeResidualFloor = 1e-12;
+
+// An edge v->u lies "across" a line when |cos| of its angle with the line is below this (37 deg
+// from the line: keeps the diagonals of a grid), "along" it when |cos| is above it.
+constexpr double kCosAcrossLine = 0.8;
+// Two lines (crease tangents) belong to the same crease when |cos| of their angle is above this
+// (within 45 deg); a neighbour on another crease, e.g. at a cube's corner, is not compared.
+// Also the stricter "across" of the sharp-edge flank test: 37 deg lost the jagged ridge of a
+// 175 deg fin at 20 % noise (F1 0.97 with 45 deg, 0.95 with 37 deg).
+constexpr double kCosSameLine = 0.7;
+// An edge is sharp (vetoes thinning, OnSharpEdge) above the crease angle, or above this many
+// times the mesh's median edge angle where that is larger: with a fixed phi, noise between two
+// faces of one sheet vetoed most of a 20 deg roof's thinning at 5 % noise (F1 0.35 -> 0.19).
+constexpr double kSharpOverMedianEdgeAngle = 5.0;
+// ... and never above this many degrees (the cosine must stay above -1).
+constexpr double kSharpAngleMaxDeg = 179.0;
+// The median edge angle is estimated from the edges of at most this many evenly spread faces.
+constexpr int kMedianEdgeAngleFaces = 100000;
+
+// --- The quadric fit (sheet_fit.h) -------------------------------------------------------------
+
+// Weight of the slope rows against the height rows, in l_ave: 2 won the paper's grids at 5 and
+// 20 % noise against 1 and 4 (docs/accuracy.md, the fit's slope weight).
+constexpr double kSlopeWeightEdges = 2.0;
+// A neighbour's normal gives slope rows only where it is within about 78 deg of v's normal.
+constexpr double kSlopeRowMinCos = 0.2;
+// No cubic where the mesh's border is within this fraction of g_m: one-sided samples made the
+// cubic tilt the clean sphere's border normals by 0.013 deg (0.0001 deg without); the whole
+// radius also took the cubic from fits that needed it (irregular sphere at 20 %, k = 8).
+constexpr double kBorderCubicFraction = 0.5;
+// Variance ratio at which one kind of row is trusted over the other (heights vs slopes, both
+// ways): a tenth.
+constexpr double kRowVarianceRatio = 0.1;
+// Bounds of the slope rows' weight that ratio sets, relative to the fixed weight: numerical
+// guards (a weight of 0 or of infinity would make the system singular).
+constexpr double kRowWeightRatioMin = 1e-9;
+constexpr double kRowWeightRatioMax = 1e6;
+// Cubic: its four extra terms are kept where their F statistic exceeds this (torus at k = 3:
+// normal bias 0.44 -> 0.01 deg).
+constexpr double kCubicSignificance = 10.0;
+// Circle term beside creases: kept where its F statistic exceeds this; at 10 or 100 it also
+// fired under 1 % noise beside creases and moved normals by up to 25 %.
+constexpr double kCircleSignificance = 1000.0;
+// Slopes' tilt test (first rounds beside creases): the heights' normal is kept where the
+// slopes move it by an F(2, n - 6) statistic above this. Roof 120 deg, 1 %, k = 5: normal median
+// 0.40 -> 0.16 deg; 6 cost normal p90 +7-10 % under 5 % noise, 10 no longer won the roof.
+constexpr double kSlopeTiltSignificance = 8.0;
+// Smallest reciprocal condition number of a fit's normal equations (a 6x6 quadratic).
+constexpr double kFitMinRcond = 1e-10;
+// Pivot spread of the shortcut factorisations (heights alone, slopes alone, cubic's Schur
+// complement) below which they are not used.
+constexpr double kFitMinPivotRatio = 1e-12;
+// Samples a fit needs: any fit, the row-variance levers, the cubic, the tilt test (which needs
+// more than this), the circle term.
+constexpr int kFitMinSamples = 3;
+constexpr int kVarianceLeverMinSamples = 10;
+constexpr int kCubicMinSamples = 12;
+constexpr int kTiltTestMinSamples = 12;
+constexpr int kCircleMinSamples = 10;
+
+}  // namespace tuning
+}  // namespace nvv
+
+#endif

@@ -1,0 +1,112 @@
+// nvv_docgen: writes the parts of the documentation that come from the parameter table, between
+// markers in a Markdown file:
+//   <!-- generated:parameters -->  ...  <!-- end generated:parameters -->   the parameter table
+//   <!-- generated:mlx -->         ...  <!-- end generated:mlx -->          the default .mlx script
+//
+// Usage: nvv_docgen FILE.md            rewrites the blocks in place
+//        nvv_docgen --check FILE.md    exits 1 (and says which block) when a block is out of date
+//        nvv_docgen --print parameters|mlx
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "filter/filter_options.h"
+#include "filter/mlx_script.h"
+
+namespace {
+
+// A default as a user types it: true/false, the enum's index and label, or the number.
+std::string DefaultText(const nvv::ParamSpec& p) {
+  std::ostringstream s;
+  if (p.type == nvv::ParamType::Bool) return p.defaultValue != 0 ? "true" : "false";
+  s << p.defaultValue;
+  return s.str();
+}
+
+std::string RangeText(const nvv::ParamSpec& p) {
+  std::ostringstream s;
+  switch (p.type) {
+    case nvv::ParamType::Bool: return "true / false";
+    case nvv::ParamType::Enum:
+      for (std::size_t i = 0; i < p.choices.size(); ++i)
+        s << (i ? "; " : "") << i << " " << p.choices[i] << " (`" << p.tokens[i] << "`)";
+      return s.str();
+    default: s << p.minValue << " – " << p.maxValue; return s.str();
+  }
+}
+
+std::string ParameterTable() {
+  std::ostringstream s;
+  s << "| name | label | default | values | meaning |\n|---|---|---|---|---|\n";
+  for (const auto& p : nvv::FilterParameterTable())
+    s << "| `" << p.name << "` | " << p.label << " | " << DefaultText(p) << " | " << RangeText(p) << " | " << p.help
+      << " |\n";
+  const nvv::SaveFileSpec& save = nvv::ResultPlyParameter();
+  s << "| `" << save.name << "` | " << save.label << " | (empty) | a file name | " << save.help
+    << " MeshLab and scripts only: the command-line tool always writes this file. |\n";
+  return s.str();
+}
+
+std::string Block(const std::string& name) {
+  if (name == "parameters") return ParameterTable();
+  if (name == "mlx") return "```xml\n" + nvv::MlxScript() + "```\n";
+  return std::string();
+}
+
+// Replaces every generated block of `text`; `stale` gets the first block that changed.
+std::string Regenerate(const std::string& text, std::string& stale) {
+  std::string out;
+  std::size_t pos = 0;
+  const std::string open = "<!-- generated:", close = "<!-- end generated:";
+  for (;;) {
+    const std::size_t a = text.find(open, pos);
+    if (a == std::string::npos) break;
+    const std::size_t nameEnd = text.find(" -->", a);
+    const std::string name = text.substr(a + open.size(), nameEnd - a - open.size());
+    const std::size_t bodyStart = text.find('\n', nameEnd) + 1;
+    const std::size_t b = text.find(close + name + " -->", bodyStart);
+    if (nameEnd == std::string::npos || b == std::string::npos || Block(name).empty()) {
+      std::fprintf(stderr, "nvv_docgen: unknown or unclosed generated block '%s'\n", name.c_str());
+      std::exit(2);
+    }
+    const std::string body = Block(name);
+    if (stale.empty() && text.compare(bodyStart, b - bodyStart, body) != 0) stale = name;
+    out += text.substr(pos, bodyStart - pos) + body;
+    pos = b;
+  }
+  return out + text.substr(pos);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "";
+  if (mode == "--print" && argc == 3) {
+    std::fputs(Block(argv[2]).c_str(), stdout);
+    return Block(argv[2]).empty() ? 2 : 0;
+  }
+  const bool check = mode == "--check";
+  if (argc != (check ? 3 : 2)) {
+    std::fprintf(stderr, "usage: nvv_docgen [--check] FILE.md | nvv_docgen --print parameters|mlx\n");
+    return 2;
+  }
+  const std::string path = argv[check ? 2 : 1];
+  std::ifstream in(path);
+  if (!in) {
+    std::fprintf(stderr, "nvv_docgen: cannot read %s\n", path.c_str());
+    return 2;
+  }
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::string stale;
+  const std::string fresh = Regenerate(buf.str(), stale);
+  if (check) {
+    if (stale.empty()) return 0;
+    std::fprintf(stderr, "nvv_docgen: the '%s' block of %s is out of date: run nvv_docgen %s\n", stale.c_str(),
+                 path.c_str(), path.c_str());
+    return 1;
+  }
+  std::ofstream(path) << fresh;
+  return 0;
+}
