@@ -474,14 +474,14 @@ def reflow(md, width=96):
                 lead = "- " if it.startswith("- ") else ""
                 # no line break inside "k = 3", "5 %", "1 / 3 / 5", "k · l_ave"
                 body = re.sub(r" (?=[=%·≤−])|(?<=[=·≤−]) |(?<=\d) (?=/ \d)|(?<=\d /) (?=\d)", GLUE, it[len(lead):])
-                lines = [l.replace(GLUE, " ") for l in
-                         textwrap.wrap(body, width - len(lead), break_long_words=False, break_on_hyphens=False)]
+                lines = textwrap.wrap(body, width - len(lead), break_long_words=False, break_on_hyphens=False)
                 # a wrapped line must not start like markdown syntax
                 for i in range(1, len(lines)):
                     while re.match(r"(- |\* |\+ |\d+\. |#|\||>)", lines[i]):
                         head, _, rest = lines[i].partition(" ")
                         lines[i - 1] += " " + head
                         lines[i] = rest
+                lines = [l.replace(GLUE, " ") for l in lines]
                 out.extend([lead + lines[0]] + ["  " * bool(lead) + l for l in lines[1:]])
         block.clear()
 
