@@ -21,7 +21,6 @@ import csv
 import math
 import os
 import re
-import shutil
 import sys
 from collections import defaultdict
 
@@ -44,12 +43,29 @@ def fnum(x):
         return float("nan")
 
 
+def read_table(name):
+    """Header and rows of one of the benchmark's CSV files. The benchmark prints estimator names
+    unquoted, and some hold a comma ("NVV quadric, 1 fit k=3"): a row with more fields than the
+    header has its name column joined back together."""
+    with open(os.path.join(res, name)) as f:
+        table = list(csv.reader(f))
+    header, body = table[0], []
+    name_col = next((header.index(c) for c in ("estimator", "method") if c in header), None)
+    for r in table[1:]:
+        extra = len(r) - len(header)
+        if extra > 0 and name_col is not None:
+            r = r[:name_col] + [",".join(r[name_col:name_col + extra + 1])] + r[name_col + extra + 1:]
+        if len(r) != len(header):
+            sys.exit("accuracy_report.py: %s: a row with %d fields under %d columns: %s" % (name, len(r), len(header), r))
+        body.append(r)
+    return header, body
+
+
 def rows(name):
-    path = os.path.join(res, name)
-    if not os.path.exists(path):
+    if not os.path.exists(os.path.join(res, name)):
         return []
-    with open(path) as f:
-        return [r for r in csv.DictReader(f) if "noise" not in r or math.isfinite(fnum(r["noise"]))]
+    header, body = read_table(name)
+    return [r for r in (dict(zip(header, b)) for b in body) if "noise" not in r or math.isfinite(fnum(r["noise"]))]
 
 
 def fmt(x):
@@ -93,7 +109,11 @@ def claim(ok, text):
 # ---- the full tables, as CSV files beside the page
 for name in ("smooth_grids.csv", "smooth_variants.csv", "creases_near.csv", "creases_f1.csv", "real_f1.csv"):
     if os.path.exists(os.path.join(res, name)):
-        shutil.copyfile(os.path.join(res, name), os.path.join(csv_dir, name))
+        header, body = read_table(name)
+        with open(os.path.join(csv_dir, name), "w", newline="") as f:
+            w = csv.writer(f, lineterminator="\n")  # quotes the names that hold a comma
+            w.writerow(header)
+            w.writerows(body)
 
 # The quadric fit's levers (nvv_bench_explore_fit, a markdown table): to CSV.
 lever_path = os.path.join(res, "levers.md")
@@ -102,7 +122,7 @@ if os.path.exists(lever_path):
     levers_line = ("- [fit_levers.csv](accuracy/fit_levers.csv): the quadric fit's slope-row weight and number of fit "
                    "rounds at k = 3 and 5, 5 % and 20 % noise (`bench/explore_fit.cpp`).")
     with open(os.path.join(csv_dir, "fit_levers.csv"), "w", newline="") as f:
-        w = csv.writer(f)
+        w = csv.writer(f, lineterminator="\n")
         w.writerow(["k", "noise", "slope_weight_lave", "fit_rounds", "normal_med", "normal_p90",
                     "cylinder_dir_med", "cylinder_dir_p90", "sphere_curv_med", "sphere_curv_p90"])
         for line in open(lever_path):
@@ -151,7 +171,7 @@ def versus_peers(data, table, writer):
 
 
 with open(os.path.join(csv_dir, "default_vs_peers.csv"), "w", newline="") as f:
-    w = csv.writer(f)
+    w = csv.writer(f, lineterminator="\n")
     w.writerow(["table", "shape", "noise", "k", "metric", "statistic", "default", "best_peer_value", "best_peer",
                 "default_at_least_as_good"])
     vs = [versus_peers(grids, "smooth_grids", w), versus_peers(variants, "smooth_variants", w),
