@@ -317,6 +317,11 @@ jr = val("smooth_grids", "sphere", "5", "CGAL jet r=6 l_ave (2x)", "normal_med")
 claim(2 / 3 < jr < 1.5, "jet at twice the radius is close to the default at k = 5 on smooth surfaces")
 claim(val("smooth_variants", "sphere irregular", "20", "NVV quadric (default) k=8", "curv_med") <
       val("smooth_variants", "sphere irregular", "20", d5, "curv_med"), "k = 8 averages more noise away")
+for n in ("1", "2", "5", "10", "20"):
+    for k in ("3", "5"):
+        for shape, m in (("sphere", "curv_med"), ("cylinder", "dir_med")):
+            claim(val("smooth_grids", shape, n, "NVV quadric (default) k=" + k, m) <
+                  val("smooth_grids", shape, n, "NVV quadric, 1 fit k=" + k, m), "one fit round costs accuracy")
 clean_normal_max = max(fnum(r["normal_p90"]) for r in grids if r["noise"] == "0")
 claim(val("creases_f1", "roof 175°", "10", "NVV k=3", "recall") < 1 and
       val("creases_f1", "roof 175°", "10", "NVV k=3", "precision") == 1, "knife edge: misses a few, adds none")
