@@ -1,7 +1,8 @@
 #!/bin/sh
-# Regenerates docs/accuracy.md and docs/images/accuracy_*.png from scratch: configures
-# build-bench/ with the benchmarks, builds nvv_bench_accuracy, runs its five sections
-# (bench/accuracy.cpp) and turns their tables and CSV files into the page and its plots
+# Regenerates docs/accuracy.md, its full tables docs/accuracy/*.csv and docs/images/accuracy_*.png
+# from scratch: configures build-bench/ with the benchmarks, builds nvv_bench_accuracy, runs its
+# five sections (bench/accuracy.cpp) and the quadric fit's levers (bench/explore_fit.cpp), and
+# turns their tables and CSV files into the page, the CSV files beside it and the plots
 # (bench/accuracy_report.py, matplotlib from Debian: apt-get install python3-matplotlib).
 # Set NVV_CPU_LOCK=/path/to/lockfile to run each build / run step under flock(1).
 set -eu
@@ -27,6 +28,7 @@ lock sh -c '
   for a in "3 5 1 1" "3 5 2 1" "3 5 4 1" "3 5 2 2" "3 5 2 3" "5 5 2 1" "5 5 2 2" "3 20 2 1" "3 20 2 2" "5 20 2 1" "5 20 2 2"; do
     build-bench/bench/nvv_bench_explore_fit $a
   done' >"$out/levers.md"
+rm -f docs/accuracy/*.csv   # the report writes every table family afresh
 /usr/bin/python3 bench/accuracy_report.py "$out" bench/accuracy.md.in docs/accuracy.md docs/images \
   "$(( $(date +%s) - start ))"
 echo "docs/accuracy.md regenerated in $(( $(date +%s) - start )) s"
