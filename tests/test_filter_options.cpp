@@ -42,7 +42,9 @@ TEST(FilterOptions, NamesAreUniqueAndEveryParameterIsSettable) {
       EXPECT_EQ(spec.choices.size(), spec.tokens.size()) << spec.name;
       EXPECT_NE("", nvv::SetOption(o, spec.name, double(spec.choices.size()))) << spec.name;
     }
-    if (spec.type == nvv::ParamType::Float) EXPECT_NE("", nvv::SetOption(o, spec.name, spec.maxValue * 2 + 1)) << spec.name;
+    if (spec.type == nvv::ParamType::Float) {
+      EXPECT_NE("", nvv::SetOption(o, spec.name, spec.maxValue * 2 + 1)) << spec.name;
+    }
     EXPECT_NE("", nvv::SetOption(o, spec.name, std::nan(""))) << spec.name;
   }
   nvv::FilterOptions o;

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <vector>
 
+#include <cstring>
+
 #include "test_mesh.h"  // vcg/complex/complex.h first, as vcglib requires
 
 #include <vcg/complex/algorithms/update/curvature.h>
@@ -37,6 +39,24 @@ inline NvvRun RunNvv(const TMesh& m, const nvv::Params& p) {
   r.st = vcg::tri::NormalVectorVoting<TMesh>::Compute(m, p, r.res, r.sum);
   return r;
 }
+// True when two result arrays hold the same bits in every field (field by field: the record's
+// padding bytes are not part of its value).
+inline bool SameBits(const std::vector<nvv::VertexResult>& a, const std::vector<nvv::VertexResult>& b) {
+  auto same = [](const void* x, const void* y, std::size_t n) { return std::memcmp(x, y, n) == 0; };
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const nvv::VertexResult &r = a[i], &s = b[i];
+    if (r.cls != s.cls || r.flags != s.flags || !same(r.lambda, s.lambda, sizeof r.lambda) ||
+        !same(r.normal, s.normal, sizeof r.normal) || !same(&r.k1, &s.k1, sizeof r.k1) ||
+        !same(&r.k2, &s.k2, sizeof r.k2) || !same(r.t1, s.t1, sizeof r.t1) || !same(r.t2, s.t2, sizeof r.t2) ||
+        !same(r.creaseTangent, s.creaseTangent, sizeof r.creaseTangent) ||
+        !same(&r.creaseCurvature, &s.creaseCurvature, sizeof r.creaseCurvature) ||
+        !same(&r.cuspAngle, &s.cuspAngle, sizeof r.cuspAngle))
+      return false;
+  }
+  return true;
+}
+
 inline nvv::Params WithK(double k, nvv::CurvatureFit fit = nvv::CurvatureFit::SheetQuadric) {
   nvv::Params p;
   p.k = k;

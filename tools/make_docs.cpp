@@ -2,15 +2,17 @@
 // markers in a Markdown file:
 //   <!-- generated:parameters -->  ...  <!-- end generated:parameters -->   the parameter table
 //   <!-- generated:mlx -->         ...  <!-- end generated:mlx -->          the default .mlx script
+//   <!-- generated:help -->        ...  <!-- end generated:help -->         `nvv --help`
 //
 // Usage: nvv_docgen FILE.md            rewrites the blocks in place
 //        nvv_docgen --check FILE.md    exits 1 (and says which block) when a block is out of date
-//        nvv_docgen --print parameters|mlx
+//        nvv_docgen --print parameters|mlx|help
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "cli/help_text.h"
 #include "filter/filter_options.h"
 #include "filter/mlx_script.h"
 
@@ -51,6 +53,7 @@ std::string ParameterTable() {
 std::string Block(const std::string& name) {
   if (name == "parameters") return ParameterTable();
   if (name == "mlx") return "```xml\n" + nvv::MlxScript() + "```\n";
+  if (name == "help") return "```text\n" + nvv_cli::HelpText() + "```\n";
   return std::string();
 }
 
@@ -88,7 +91,7 @@ int main(int argc, char** argv) {
   }
   const bool check = mode == "--check";
   if (argc != (check ? 3 : 2)) {
-    std::fprintf(stderr, "usage: nvv_docgen [--check] FILE.md | nvv_docgen --print parameters|mlx\n");
+    std::fprintf(stderr, "usage: nvv_docgen [--check] FILE.md | nvv_docgen --print parameters|mlx|help\n");
     return 2;
   }
   const std::string path = argv[check ? 2 : 1];

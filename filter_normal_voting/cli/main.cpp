@@ -76,6 +76,9 @@ int Run(int argc, char** argv) {
   nvv_cli::LoadInfo info;
   std::string error;
   if (!nvv_cli::LoadMesh(a.input, m, info, error)) return Fail(kBadInput, a.input + ": " + error);
+  // Refuse an unwritable destination before anything is printed or computed.
+  const std::string unwritable = nvv::CheckOutputPath(a.output);
+  if (!unwritable.empty()) return Fail(kCannotWrite, unwritable);
   if (!a.quiet) {
     std::printf("input: %s (%s, %d vertices, %d faces%s)\n", a.input.c_str(), info.format.c_str(), m.vn, m.fn,
                 info.weldedVertices > 0 ? (", welded " + std::to_string(info.weldedVertices) + " vertices").c_str()

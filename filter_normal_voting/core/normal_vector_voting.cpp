@@ -47,7 +47,7 @@ std::string ValidateRun(const SurfaceGraph& g, const Params& p) {
   if (!bad.empty()) return bad;
   if (g.VertexCount() == 0) return "The mesh is empty.";
   if (g.FaceCount() == 0)
-    return "The mesh has no faces (a point cloud?) or none it can use (every face is deleted, repeats a "
+    return "The mesh has no faces (a point cloud?) or no usable triangles (every face is deleted, repeats a "
            "vertex or has a non-finite coordinate): normal vector voting needs a triangle mesh; reconstruct "
            "a surface first.";
   if (!(g.maxArea > 0) || !(g.meanEdge > 0) || !std::isfinite(g.meanEdge))

@@ -8,8 +8,9 @@ namespace nvv {
 const std::vector<ParamSpec>& FilterParameterTable() {
   static const std::vector<ParamSpec> table = {
     {"neighbourhood_k", ParamType::Float, "Neighbourhood size k",
-     "Radius of the geodesic neighbourhood in mean edge lengths (g_m = k * l_ave). Small k (1-2) keeps "
-     "small features; larger k (3-8) averages away scanner noise. The absolute radius is written to the log.",
+     "Radius of the neighbourhood in mean edge lengths (g_m = k * l_ave): the geodesic ball whose triangles "
+     "vote, and the ball the curvature is fitted over. Small k (1-2) keeps small features; larger k (3-8) "
+     "averages away scanner noise. The absolute radius is written to the log.",
      3.0, 0.1, 50.0, {}, {}, false},
     {"absolute_radius", ParamType::Float, "Absolute radius (0 = use k)",
      "Neighbourhood radius in the mesh's own units. 0 means: use k times the mean edge length.",

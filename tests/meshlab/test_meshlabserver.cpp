@@ -87,8 +87,9 @@ TEST(MeshLabServer, DefaultRunMatchesTheCoreInProcess) {
     const double q = nvv::QualityValue(res[i], nvv::QualityMode::MeanCurvature, valid);
     EXPECT_NEAR(q, out.vert[i].cQ(), 1e-6 + 1e-5 * std::abs(q)) << i;
     EXPECT_EQ(nvv::ClassColor(res[i].cls), out.vert[i].cC()) << i;
-    if (res[i].Has(nvv::kNormalValid))
+    if (res[i].Has(nvv::kNormalValid)) {
       EXPECT_NEAR(0.0, (out.vert[i].cN() - vcg::Point3f(res[i].normal[0], res[i].normal[1], res[i].normal[2])).Norm(), 1e-5);
+    }
     surface += res[i].cls == nvv::VertexClass::Surface;
     crease += res[i].cls == nvv::VertexClass::Crease;
   }
@@ -112,7 +113,9 @@ TEST(MeshLabServer, EveryParameterIsHonoured) {
     const auto mPtr = RunFilter(input.empty() ? kCad : input, values, name, &run);
     const MMesh& m = *mPtr;
     SCOPED_TRACE(name + "=" + value);
-    if (input.empty()) ASSERT_EQ(base.vert.size(), m.vert.size());
+    if (input.empty()) {
+      ASSERT_EQ(base.vert.size(), m.vert.size());
+    }
     expect(m, run);
   };
   check("neighbourhood_k", "6", [&](const MMesh& m, const ServerRun&) { EXPECT_GT(MaxQualityDiff(base, m), 1e-3); });
@@ -339,4 +342,33 @@ TEST(MeshLabServer, RealDefectiveScansRunWithASensibleResult) {
     EXPECT_GT(perClass[0], c.minSurface * n);
     EXPECT_LT(perClass[3], 0.05 * n);  // unclassified: unreferenced and non-finite vertices only
   }
+}
+
+// The README's default .mlx and its meshlabserver command line, run as printed (only the
+// meshlabserver of the test prefix and the file names are substituted).
+TEST(MeshLabServer, ReadmeScriptRunsAsPrinted) {
+  std::ifstream in(NVV_README);
+  ASSERT_TRUE(in.good()) << NVV_README;
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string readme = text.str();
+  const std::size_t a = readme.find("```xml\n<!DOCTYPE FilterScript>");
+  ASSERT_NE(std::string::npos, a) << "no .mlx block in the README";
+  const std::size_t start = readme.find('\n', a) + 1, end = readme.find("```", start);
+  const std::string dir = TempDir() + "/readme";
+  ASSERT_EQ(0, std::system(("mkdir -p '" + dir + "' && cp '" + kCad + "' '" + dir + "/scan.ply'").c_str()));
+  std::ofstream(dir + "/nvv.mlx") << readme.substr(start, end - start);
+  const std::string printed = "xvfb-run -a meshlabserver -i scan.ply -o scan_nvv.ply -m vc vq vn -s nvv.mlx";
+  ASSERT_NE(std::string::npos, readme.find(printed)) << "the README's command line changed: update this test";
+  std::string cmd = printed;
+  cmd.replace(cmd.find("meshlabserver"), std::string("meshlabserver").size(), Prefix() + "/bin/meshlabserver");
+  const int status = std::system(("cd '" + dir + "' && " + cmd + " > run.log 2>&1").c_str());
+  std::ifstream logFile(dir + "/run.log");
+  std::stringstream log;
+  log << logFile.rdbuf();
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << log.str();
+  EXPECT_NE(std::string::npos, log.str().find("Normal vector voting:")) << log.str();
+  MMesh m;
+  ASSERT_TRUE(ReadPly(dir + "/scan_nvv.ply", m));
+  EXPECT_EQ(CountColour(m, vcg::Color4b(220, 30, 30, 255)) > 0, true) << "no crease colour in the result";
 }
