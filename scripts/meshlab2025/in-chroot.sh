@@ -5,7 +5,8 @@
 # Usage: scripts/meshlab2025/in-chroot.sh STEP.sh [ARGS...]
 set -euo pipefail
 source "$(dirname "$0")/chroot-env.sh"
-[ "$(id -u)" -eq 0 ] || nvv_die "run as root"
+# debootstrap, chroot and mount need root: a user with sudo gets it here.
+[ "$(id -u)" -eq 0 ] || exec sudo -E bash "$0" "$@"
 [ -f "$NVV_CHROOT/.nvv-chroot-ready" ] || nvv_die "no chroot in $NVV_CHROOT: run make-chroot.sh first"
 step=$1; shift
 [ -f "$nvv_repo/scripts/meshlab2025/in-chroot/$step" ] || nvv_die "no step $step"

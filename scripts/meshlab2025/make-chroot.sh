@@ -7,7 +7,8 @@
 # Usage: scripts/meshlab2025/make-chroot.sh        (as root; see chroot-env.sh for settings)
 set -euo pipefail
 source "$(dirname "$0")/chroot-env.sh"
-[ "$(id -u)" -eq 0 ] || nvv_die "run as root (debootstrap, chroot and mount need it)"
+# debootstrap, chroot and mount need root: a user with sudo gets it here.
+[ "$(id -u)" -eq 0 ] || exec sudo -E bash "$0" "$@"
 stamp=$NVV_CHROOT/.nvv-chroot-ready
 if [ -f "$stamp" ]; then nvv_log "reusing the sid chroot in $NVV_CHROOT"; exit 0; fi
 

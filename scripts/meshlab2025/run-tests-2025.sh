@@ -14,7 +14,8 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/chroot-env.sh"
-[ "$(id -u)" -eq 0 ] || nvv_die "run as root (debootstrap, chroot and mount need it)"
+# debootstrap, chroot and mount need root: a user with sudo gets it here.
+[ "$(id -u)" -eq 0 ] || exec sudo -E bash "$0" "$@"
 start=$(date +%s)
 step() { nvv_log "== $* ($(( $(date +%s) - start )) s)"; }
 trap 'echo "[meshlab2025] FAILED after $(( $(date +%s) - start )) s" >&2' ERR
