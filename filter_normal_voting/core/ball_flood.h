@@ -7,9 +7,7 @@
 // g_m <= a few l_ave of a surface whose radii of curvature are tens of l_ave, the two differ by
 // g^3 / (24 R^2), far below an edge length; across a crease the march stops at the crease's
 // vertices either way (`blocked`). It costs a stamp test and one squared distance per edge end,
-// where the march pays two planar unfoldings and an indexed-heap update per face corner: on a
-// 1 M-vertex torus at k = 3 the march was 44 % of the whole filter's profile, two thirds of it
-// in pass 2's fit rounds (docs/performance.md gives the timings before and after).
+// where the march pays two planar unfoldings and an indexed-heap update per face corner.
 //
 // Scratch state is per instance (one per thread): a stamp per vertex, so a new flood resets in
 // O(1); the stamps are cleared only when the 32-bit counter wraps.

@@ -11,20 +11,12 @@
 // reset in O(visited) after each march: a march of a few hundred vertices never pays for the
 // mesh's size, and the per-vertex loop allocates nothing once the vectors have grown.
 //
-// Cost per march (what the profile of the two passes showed, and what was done about it):
-//  - the edge lengths of the unfolding are read from SurfaceGraph::faceEdge, computed once,
-//    instead of three square roots and three position loads per update;
-//  - the front is an indexed binary heap with decrease-key, one entry per tentative vertex,
-//    instead of a lazy-deletion priority queue whose stale duplicates (a vertex is improved
-//    from several faces) doubled its size and the cost of every push and pop;
-//  - a vertex whose tentative distance exceeds the radius keeps that distance (Distance() of the
-//    one-ring needs it) but enters the heap only once an update brings it within the radius:
-//    such an entry could never be popped, and the ring just outside g_m (a third of the touched
-//    vertices at k = 3) only made every sift deeper;
-//  - the unfolded segment length is sqrt(dx^2 + dy^2), not std::hypot: both operands are finite
-//    here, and hypot's overflow-safe scaling was 7 % of the whole filter's profile.
-// None changes the order of acceptance (the heap pops the unique minimum of (distance, vertex)
-// among the entries within the radius); sqrt rounds differently from hypot in the last bit.
+// Cost per march: the edge lengths of the unfolding are read from SurfaceGraph::faceEdge; the
+// front is an indexed binary heap with decrease-key (one entry per tentative vertex); a vertex
+// whose tentative distance exceeds the radius keeps that distance (Distance() of the one-ring
+// needs it) but enters the heap only once an update brings it within the radius, since such an
+// entry could never be popped. None of these changes the order of acceptance: the heap pops the
+// unique minimum of (distance, vertex) among the entries within the radius.
 #ifndef NVV_CORE_GEODESIC_MARCH_H
 #define NVV_CORE_GEODESIC_MARCH_H
 

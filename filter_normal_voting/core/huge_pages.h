@@ -1,12 +1,10 @@
 // Large per-vertex and per-face arrays on transparent huge pages, where Linux offers them.
 //
-// Why: a 1 M-vertex mesh gives the core about 250 MB of flat arrays (the graph, the results,
-// each thread's marching state), all written for the first time in one go. With 4 KB pages
-// that is some 60,000 page faults; on the virtual machine of docs/performance.md each cost
-// ~11 us, so building the graph and the result array took ~1 s of the torus's 6.4 s on two
-// threads, serially. Asking for 2 MB pages before the first touch (madvise MADV_HUGEPAGE; the
-// kernel's default "madvise" mode grants huge pages only to ranges that ask) takes 512 times
-// fewer faults and fewer TLB misses in the passes' scattered reads.
+// Why: a million-vertex mesh gives the core a few hundred MB of flat arrays (the graph, the
+// results, each thread's scratch), all written for the first time in one go. Asking for 2 MB pages
+// before the first touch (madvise MADV_HUGEPAGE; the kernel's default "madvise" mode grants huge
+// pages only to ranges that ask) takes 512 times fewer page faults and fewer TLB misses in the
+// passes' scattered reads.
 //
 // It is advice: where THP is off, not Linux, or the block is small, nothing changes. A block
 // is only advised before any element is written, so the kernel never has to collapse pages.

@@ -8,9 +8,8 @@ namespace nvv {
 
 namespace {
 
-// The sheet part of the model: 1, x, y. Quadric sheets (adding x^2, xy, y^2) were measured:
-// the squares absorb most of |w|, and crease F1 at k = 3 fell on every noisy roof (20 deg at
-// 5 % noise: 0.98 -> 0.57; 90 deg at 20 %: 0.91 -> 0.74).
+// The sheet part of the model: 1, x, y. Planar sheets: quadric ones would absorb most of |w|
+// (docs/design.md).
 constexpr int kRidgeBasis = 3;
 typedef Eigen::Matrix<double, kRidgeBasis, 1> RidgeBasis;
 RidgeBasis RidgeBasisAt(const Eigen::Vector3d& q) {

@@ -14,14 +14,9 @@
 //   R_0 = RSS_0 / (1 + |(p0, q0)|^2),  R_1 = sum_i e_i^2 / (1 + |g_side(i)|^2)
 //
 // R_0 and R_1 are the residuals across the fitted sheets rather than along n: a height error
-// e on a sheet of gradient g is a distance e / sqrt(1 + |g|^2) from it. On steep sheets the
-// heights' residuals grow with the slope while the kink does not: on a 175 deg crease (a fin,
-// sheets ~87 deg from the bisector frame's plane) noise along the normals became heights
-// ~20 times larger and F fell below 9 on a third of the ridge at 10 % noise. With the
-// residuals across the sheets, crease F1 at k = 3 and 20 % noise went 0.86 -> 0.95 on the
-// 175 deg roof, 0.88 -> 0.90 on the cube and 0.78 -> 0.85 on the capped cylinder, for
-// 0.98 -> 0.97 on the clean fandisk (docs/accuracy.md). The fit itself stays the linear one
-// in the heights.
+// e on a sheet of gradient g is a distance e / sqrt(1 + |g|^2) from it, so steep sheets (a
+// fin's, seen from the bisector's frame) do not drown the kink in their heights' residuals. The
+// fit itself stays the linear one in the heights.
 //
 // The kink b uses every neighbour's height: at 20 % noise on a 20 deg roof (k = 3, ~30 samples)
 // its angle is known to about 2-3 deg, where the normals of single faces scatter by ~14 deg and

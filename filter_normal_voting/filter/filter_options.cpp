@@ -5,8 +5,11 @@
 
 namespace nvv {
 
-const std::vector<ParamSpec>& FilterParameterTable() {
-  static const std::vector<ParamSpec> table = {
+namespace {
+
+// What the algorithm does (params.h), in the dialog's order.
+std::vector<ParamSpec> AlgorithmParameters() {
+  return {
     {"neighbourhood_k", ParamType::Float, "Neighbourhood size k",
      "Radius of the neighbourhood in mean edge lengths (g_m = k * l_ave): the geodesic ball whose triangles "
      "vote, and the ball the curvature is fitted over. Small k (1-2) keeps small features; larger k (3-8) "
@@ -58,6 +61,12 @@ const std::vector<ParamSpec>& FilterParameterTable() {
      "above 90 deg (knife edges, fins, blade edges) are found. Paper: the original eigenvalue order, "
      "which takes creases sharper than about 120 deg for smooth surface.",
      0.0, 0, 1, {"Sign-aware", "Paper's eigenvalue order"}, {"sign_aware", "paper"}, true},
+  };
+}
+
+// What is written onto the mesh, and the neighbourhood cap.
+std::vector<ParamSpec> OutputParameters() {
+  return {
     {"update_normals", ParamType::Bool, "Update vertex normals",
      "Replace the normals of surface vertices by the estimated ones, and those of crease vertices by "
      "the bisector of the two sheets. Corner and unclassified vertices keep the direction of their normal "
@@ -90,6 +99,16 @@ const std::vector<ParamSpec>& FilterParameterTable() {
      "the radius, at least 1024. Vertices that hit it are counted in the log.",
      0.0, 0, 10000000, {}, {}, true},
   };
+}
+
+}  // namespace
+
+const std::vector<ParamSpec>& FilterParameterTable() {
+  static const std::vector<ParamSpec> table = [] {
+    std::vector<ParamSpec> t = AlgorithmParameters();
+    for (const ParamSpec& p : OutputParameters()) t.push_back(p);
+    return t;
+  }();
   return table;
 }
 

@@ -144,23 +144,17 @@ ResultPlyVertex MakeResultPlyVertex(const MeshType& m, std::size_t i, const Vert
   return o;
 }
 
-// Writes mesh m with results res (one per slot of m.vert) to `path`, with extra header
-// comments. On failure returns false, sets `error` to one sentence and removes a partial
-// regular file.
+namespace ply_detail {
+
+// The live vertices' new indices (-1 for deleted ones; returns their count) and the live faces
+// whose three vertices are live, renumbered.
 template <class MeshType>
-bool WriteResultPly(const std::string& path, const MeshType& m, const std::vector<VertexResult>& res, bool binary,
-                    const std::vector<std::string>& comments, std::string& error) {
-  using namespace ply_detail;
-  if (res.size() != m.vert.size()) {
-    error = "the results do not match the mesh (" + std::to_string(res.size()) + " results for " +
-            std::to_string(m.vert.size()) + " vertex slots)";
-    return false;
-  }
-  std::vector<int> newIndex(m.vert.size(), -1);
+int LiveElements(const MeshType& m, std::vector<int>& newIndex, std::vector<std::array<int, 3>>& faces) {
+  newIndex.assign(m.vert.size(), -1);
   int nv = 0;
   for (std::size_t i = 0; i < m.vert.size(); ++i)
     if (!m.vert[i].IsD()) newIndex[i] = nv++;
-  std::vector<std::array<int, 3>> faces;
+  faces.clear();
   faces.reserve(m.face.size());
   for (const auto& f : m.face) {
     if (f.IsD()) continue;
@@ -174,19 +168,42 @@ bool WriteResultPly(const std::string& path, const MeshType& m, const std::vecto
     }
     if (ok) faces.push_back(t);
   }
+  return nv;
+}
 
+inline std::string Header(bool binary, const std::vector<std::string>& comments, int vertices, std::size_t faces) {
   std::string header = "ply\n";
   header += binary ? "format binary_little_endian 1.0\n" : "format ascii 1.0\n";
   header += "comment Normal Vector Voting results (nvv_format 1)\n";
   for (const auto& c : comments) header += "comment " + OneLine(c) + "\n";
-  header += "element vertex " + std::to_string(nv) + "\n";
+  header += "element vertex " + std::to_string(vertices) + "\n";
   ResultPlyVertex probe;
   ForEachResultPlyField(probe, [&](const char* name, auto& field) {
     header += std::string("property ") + TypeName(field) + " " + name + "\n";
   });
-  header += "element face " + std::to_string(faces.size()) + "\n";
+  header += "element face " + std::to_string(faces) + "\n";
   header += "property list uchar int vertex_indices\nend_header\n";
+  return header;
+}
 
+}  // namespace ply_detail
+
+// Writes mesh m with results res (one per slot of m.vert) to `path`, with extra header
+// comments. On failure returns false, sets `error` to one sentence and removes a partial
+// regular file.
+template <class MeshType>
+bool WriteResultPly(const std::string& path, const MeshType& m, const std::vector<VertexResult>& res, bool binary,
+                    const std::vector<std::string>& comments, std::string& error) {
+  using namespace ply_detail;
+  if (res.size() != m.vert.size()) {
+    error = "the results do not match the mesh (" + std::to_string(res.size()) + " results for " +
+            std::to_string(m.vert.size()) + " vertex slots)";
+    return false;
+  }
+  std::vector<int> newIndex;
+  std::vector<std::array<int, 3>> faces;
+  const int nv = LiveElements(m, newIndex, faces);
+  const std::string header = Header(binary, comments, nv, faces.size());
   FILE* fp = std::fopen(path.c_str(), "wb");
   if (!fp) {
     error = "cannot open '" + path + "' for writing: " + std::strerror(errno);

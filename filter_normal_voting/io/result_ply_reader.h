@@ -115,17 +115,12 @@ inline bool ReadWholeFile(const std::string& path, std::string& data) {
 
 }  // namespace ply_read_detail
 
-inline bool ReadResultPly(const std::string& path, ResultPlyData& out, std::string& error) {
-  using namespace ply_read_detail;
-  out = ResultPlyData();
-  std::string data;
-  if (!ReadWholeFile(path, data)) {
-    error = "cannot read '" + path + "'";
-    return false;
-  }
-  // Header: lines up to and including "end_header".
-  std::vector<Element> elements;
-  std::size_t pos = 0;
+namespace ply_read_detail {
+
+// The header: lines up to and including "end_header"; `pos` ends at the body's first byte.
+inline bool ReadHeader(const std::string& path, const std::string& data, ResultPlyData& out,
+                       std::vector<Element>& elements, std::size_t& pos, std::string& error) {
+  pos = 0;
   bool sawFormat = false, sawEnd = false;
   for (int lineNo = 0; pos < data.size() && !sawEnd; ++lineNo) {
     std::size_t eol = data.find('\n', pos);
@@ -183,26 +178,77 @@ inline bool ReadResultPly(const std::string& path, ResultPlyData& out, std::stri
     }
   }
   if (!sawFormat || !sawEnd) { error = "incomplete PLY header in '" + path + "'"; return false; }
+  return true;
+}
 
-  // Where each known vertex property goes in a ResultPlyVertex.
-  struct Slot { std::ptrdiff_t offset; bool isFloat; };
-  std::map<std::string, Slot> fieldSlots;
-  {
-    ResultPlyVertex probe;
-    const char* base = reinterpret_cast<const char*>(&probe);
-    ForEachResultPlyField(probe, [&](const char* name, auto& field) {
-      typedef typename std::decay<decltype(field)>::type T;
-      fieldSlots[name] = Slot{reinterpret_cast<const char*>(&field) - base, std::is_same<T, float>::value};
-    });
+// Where each known vertex property goes in a ResultPlyVertex.
+struct Slot {
+  std::ptrdiff_t offset;
+  bool isFloat;
+};
+inline std::map<std::string, Slot> VertexSlots() {
+  std::map<std::string, Slot> slots;
+  ResultPlyVertex probe;
+  const char* base = reinterpret_cast<const char*>(&probe);
+  ForEachResultPlyField(probe, [&](const char* name, auto& field) {
+    typedef typename std::decay<decltype(field)>::type T;
+    slots[name] = Slot{reinterpret_cast<const char*>(&field) - base, std::is_same<T, float>::value};
+  });
+  return slots;
+}
+
+// Element e's records: vertex properties into out.vertices through `where`, the face list
+// (property `faceList`, or -1) into out.faces, everything else read and dropped.
+inline bool ReadElement(const Element& e, const std::vector<const Slot*>& where, int faceList, BodyCursor& cur,
+                        ResultPlyData& out, std::string& error) {
+  for (std::size_t i = 0; i < e.count; ++i) {
+    for (std::size_t k = 0; k < e.props.size(); ++k) {
+      const Property& p = e.props[k];
+      double x = 0;
+      if (!p.list) {
+        if (!cur.Read(p.type, x)) { error = "unexpected end or bad value in element '" + e.name + "'"; return false; }
+        if (where[k]) {
+          char* dst = reinterpret_cast<char*>(&out.vertices[i]) + where[k]->offset;
+          if (where[k]->isFloat) { const float f = float(x); std::memcpy(dst, &f, sizeof f); }
+          else *reinterpret_cast<std::uint8_t*>(dst) = std::uint8_t(x);
+        }
+        continue;
+      }
+      double n = 0;
+      if (!cur.Read(p.countType, n) || n < 0) { error = "bad list in element '" + e.name + "'"; return false; }
+      if (int(k) == faceList && n != 3) {
+        error = "face " + std::to_string(i) + " has " + std::to_string(int(n)) + " vertices, not 3";
+        return false;
+      }
+      for (int j = 0; j < int(n); ++j) {
+        if (!cur.Read(p.type, x)) { error = "unexpected end or bad value in element '" + e.name + "'"; return false; }
+        if (int(k) == faceList) out.faces[i][j] = int(x);
+      }
+    }
   }
+  return true;
+}
 
+}  // namespace ply_read_detail
+
+inline bool ReadResultPly(const std::string& path, ResultPlyData& out, std::string& error) {
+  using namespace ply_read_detail;
+  out = ResultPlyData();
+  std::string data;
+  if (!ReadWholeFile(path, data)) {
+    error = "cannot read '" + path + "'";
+    return false;
+  }
+  std::vector<Element> elements;
+  std::size_t pos = 0;
+  if (!ReadHeader(path, data, out, elements, pos, error)) return false;
+  const std::map<std::string, Slot> fieldSlots = VertexSlots();
   BodyCursor cur(data, pos, out.binary);
   bool sawVertex = false, sawFace = false;
   for (const Element& e : elements) {
-    const bool isVertex = e.name == "vertex", isFace = e.name == "face";
     std::vector<const Slot*> where(e.props.size(), nullptr);
     int faceList = -1;
-    if (isVertex) {
+    if (e.name == "vertex") {
       sawVertex = true;
       std::map<std::string, bool> found;
       for (std::size_t k = 0; k < e.props.size(); ++k) {
@@ -213,7 +259,7 @@ inline bool ReadResultPly(const std::string& path, ResultPlyData& out, std::stri
         if (!found.count(s.first)) { error = "vertex property '" + s.first + "' is missing"; return false; }
       out.vertices.resize(e.count);
     }
-    if (isFace) {
+    if (e.name == "face") {
       sawFace = true;
       for (std::size_t k = 0; k < e.props.size(); ++k)
         if (e.props[k].list && (e.props[k].name == "vertex_indices" || e.props[k].name == "vertex_index"))
@@ -221,31 +267,7 @@ inline bool ReadResultPly(const std::string& path, ResultPlyData& out, std::stri
       if (faceList < 0) { error = "the face element has no vertex_indices list"; return false; }
       out.faces.resize(e.count);
     }
-    for (std::size_t i = 0; i < e.count; ++i) {
-      for (std::size_t k = 0; k < e.props.size(); ++k) {
-        const Property& p = e.props[k];
-        double x = 0;
-        if (!p.list) {
-          if (!cur.Read(p.type, x)) { error = "unexpected end or bad value in element '" + e.name + "'"; return false; }
-          if (where[k]) {
-            char* dst = reinterpret_cast<char*>(&out.vertices[i]) + where[k]->offset;
-            if (where[k]->isFloat) { const float f = float(x); std::memcpy(dst, &f, sizeof f); }
-            else *reinterpret_cast<std::uint8_t*>(dst) = std::uint8_t(x);
-          }
-          continue;
-        }
-        double n = 0;
-        if (!cur.Read(p.countType, n) || n < 0) { error = "bad list in element '" + e.name + "'"; return false; }
-        if (int(k) == faceList && n != 3) {
-          error = "face " + std::to_string(i) + " has " + std::to_string(int(n)) + " vertices, not 3";
-          return false;
-        }
-        for (int j = 0; j < int(n); ++j) {
-          if (!cur.Read(p.type, x)) { error = "unexpected end or bad value in element '" + e.name + "'"; return false; }
-          if (int(k) == faceList) out.faces[i][j] = int(x);
-        }
-      }
-    }
+    if (!ReadElement(e, where, faceList, cur, out, error)) return false;
   }
   if (!sawVertex) { error = "no vertex element"; return false; }
   if (!sawFace) { error = "no face element"; return false; }
