@@ -26,7 +26,9 @@ PassEnd CurvatureAlongCreases(const SurfaceGraph& g, const Pass1Settings& s, int
     VertexResult& r = out[v];
     if (r.cls != VertexClass::Crease) return;
     if (!march.Run(v, s.radius, s.maxNeighbourhood)) r.flags |= kNeighbourhoodCapped;
-    r.creaseCurvature = float(CreaseCurvature(march, out, v, s.sigma));
+    // Two crease vertices a denormal distance apart would give an infinite rate of turn.
+    const float kappa = float(CreaseCurvature(march, out, v, s.sigma));
+    r.creaseCurvature = std::isfinite(kappa) ? kappa : 0.0f;
   });
 }
 

@@ -37,6 +37,7 @@ void DescribeInput(const SurfaceGraph& g, Summary& sum) {
   sum.unreferencedVertices = g.unreferenced;
   sum.degenerateFaces = g.degenerate;
   sum.droppedFaces = g.dropped;
+  sum.repeatedFaces = g.repeated;
   sum.consistentlyOriented = g.consistentlyOriented;
   sum.meanEdge = g.meanEdge;
 }
@@ -110,6 +111,20 @@ void Summarise(const SurfaceGraph& g, const Pass1Settings& s, const std::vector<
     sum.warnings.push_back(std::to_string(g.degenerate) + " faces have zero area and cast no vote.");
   if (g.dropped > 0)
     sum.warnings.push_back(std::to_string(g.dropped) + " faces repeat a vertex or touch a non-finite one and were ignored.");
+  if (g.repeated > 0)
+    sum.warnings.push_back(std::to_string(g.repeated) + " faces have the same three vertices as another face and were "
+                           "counted once.");
+  const std::size_t unclassified = sum.perClass[int(VertexClass::Invalid)];
+  // Deleted, non-finite and unreferenced vertices are unclassified by definition.
+  const std::size_t explained = std::size_t(std::count(g.usable.begin(), g.usable.end(), 0)) + g.unreferenced;
+  if (unclassified > explained)
+    sum.warnings.push_back(std::to_string(unclassified - explained) + " vertices of usable faces could not be "
+                           "classified (their neighbourhood held no triangle with an area); check the radius "
+                           "and the mesh's scale.");
+  if (g.closed && g.volume < 0)
+    sum.warnings.push_back("The mesh is closed and its faces point inward (negative volume): normals point in and "
+                           "every curvature sign is flipped. Invert the faces' orientation first (MeshLab: "
+                           "Invert Faces Orientation).");
 }
 
 }  // namespace

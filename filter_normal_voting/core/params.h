@@ -86,6 +86,8 @@ struct Params {
 // the automatic cap allows four times that (regions up to 4x denser than average keep their whole
 // neighbourhood), and never less than 1,024.
 inline int AutoNeighbourhoodCap(double kEffective) {
+  // An absolute radius far beyond the mesh's edges costs what the largest k costs, not more.
+  if (!(kEffective <= tuning::kAutoCapMaxK)) kEffective = tuning::kAutoCapMaxK;  // NaN too
   const double c = tuning::kAutoCapPerK2 * kEffective * kEffective;
   return c > double(tuning::kMaxCap) ? tuning::kMaxCap : (c < double(tuning::kAutoCapMin) ? tuning::kAutoCapMin : int(c));
 }

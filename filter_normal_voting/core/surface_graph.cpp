@@ -1,5 +1,6 @@
 #include "surface_graph.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "tuning.h"
@@ -45,6 +46,7 @@ void SurfaceGraph::Build(std::vector<Eigen::Vector3d>&& positions, std::vector<s
     if (ok) face.push_back(f);
     else ++dropped;
   }
+  repeated = RemoveRepeatedFaces(face, n);
   const int nf = FaceCount();
   AssignOnHugePages(faceNormal, nf, Eigen::Vector3d::Zero().eval());
   AssignOnHugePages(faceArea, nf, 0.0);
@@ -91,16 +93,17 @@ void SurfaceGraph::Build(std::vector<Eigen::Vector3d>&& positions, std::vector<s
   unreferenced = 0;
   for (int v = 0; v < n; ++v)
     if (usable[v] && !Referenced(v)) ++unreferenced;
-  consistentlyOriented = CheckOrientation(T);
+  CheckOrientation(T);
 }
 
 // A two-face edge used twice in the same direction means the orientation flips there.
 // Edges with three or more faces (non-manifold) say nothing about orientation: skipped.
 // Done on the CSR adjacency instead of a hash map of directed edges: the same answer with no
-// allocation, several times faster on million-face meshes. A face using a -> b holds both a and
-// b, so only the faces of the endpoint with fewer faces are scanned: a 100,000-valence fan
-// vertex costs its neighbours' two faces per edge, not 100,000.
-bool SurfaceGraph::CheckOrientation(int threads) const {
+// allocation. A face using a -> b holds both a and b, so only the faces of the endpoint with fewer
+// faces are scanned: a 100,000-valence fan vertex costs its neighbours' two faces per edge.
+// A consistently oriented mesh whose every directed edge has its reverse is closed; its signed
+// volume (the divergence theorem, summed in face order) says whether the faces point outward.
+void SurfaceGraph::CheckOrientation(int threads) {
   // Number of faces that use the directed edge a -> b.
   auto uses = [this](int a, int b) {
     const int scan = vfStart[b + 1] - vfStart[b] < vfStart[a + 1] - vfStart[a] ? b : a;  // the endpoint with fewer faces
@@ -112,14 +115,55 @@ bool SurfaceGraph::CheckOrientation(int threads) const {
     return count;
   };
   const int nf = FaceCount();
-  bool flipped = false;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : flipped)
+  bool flipped = false, open = false;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : flipped, open)
   for (int i = 0; i < nf; ++i)
     for (int j = 0; j < 3 && !flipped; ++j) {
       const int a = face[i][j], b = face[i][(j + 1) % 3];
-      flipped = uses(a, b) >= 2 && uses(b, a) == 0;
+      const int reverse = uses(b, a);
+      flipped = reverse == 0 && uses(a, b) >= 2;
+      open = open || reverse == 0;
     }
-  return !flipped;
+  consistentlyOriented = !flipped;
+  closed = consistentlyOriented && !open && nf > 0;
+  volume = 0;
+  if (!closed) return;
+  for (const auto& f : face) volume += pos[f[0]].dot(pos[f[1]].cross(pos[f[2]])) / 6.0;
+}
+
+// Drops every face whose three vertices (in any order) are those of an earlier face, keeping the
+// order of the rest; returns how many. Faces are bucketed by their lowest vertex (a counting
+// sort) and only buckets of two or more are sorted, so the cost is linear on ordinary meshes and
+// N log N for N copies of one triangle, never N^2.
+std::size_t SurfaceGraph::RemoveRepeatedFaces(std::vector<std::array<int, 3>>& faces, int n) {
+  auto sorted = [](const std::array<int, 3>& f) {
+    std::array<int, 3> s = f;
+    std::sort(s.begin(), s.end());
+    return s;
+  };
+  std::vector<int> start(std::size_t(n) + 1, 0);
+  for (const auto& f : faces) ++start[std::size_t(sorted(f)[0]) + 1];
+  for (int v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<int> order(faces.size()), fill(start.begin(), start.end() - 1);
+  for (std::size_t i = 0; i < faces.size(); ++i) order[fill[sorted(faces[i])[0]]++] = int(i);
+  std::vector<std::uint8_t> drop(faces.size(), 0);
+  std::size_t count = 0;
+  for (int v = 0; v < n; ++v) {
+    if (start[v + 1] - start[v] < 2) continue;
+    auto first = order.begin() + start[v], last = order.begin() + start[v + 1];
+    std::sort(first, last, [&](int x, int y) {
+      const auto a = sorted(faces[x]), b = sorted(faces[y]);
+      return a != b ? a < b : x < y;
+    });
+    for (auto it = first + 1; it != last; ++it)
+      if (sorted(faces[*it]) == sorted(faces[*(it - 1)])) { drop[*it] = 1; ++count; }
+  }
+  if (count == 0) return 0;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    if (!drop[i]) faces[kept++] = faces[i];
+  faces.resize(kept);
+  return count;
 }
 
 }  // namespace nvv

@@ -45,7 +45,10 @@ struct SurfaceGraph {
   double meanEdge = 0;                        // l_ave over the edges of usable faces
   double maxArea = 0;                         // A_max of Eq. 8
   bool consistentlyOriented = true;           // every edge shared by two faces is used in opposite directions
+  bool closed = false;                        // consistently oriented and every edge has its reverse
+  double volume = 0;                          // signed volume where closed: negative when the faces point inward
   std::size_t nonFinite = 0, unreferenced = 0, degenerate = 0, dropped = 0;
+  std::size_t repeated = 0;                   // faces with the same three vertices as an earlier face: dropped
 
   int VertexCount() const { return static_cast<int>(pos.size()); }
   int FaceCount() const { return static_cast<int>(face.size()); }
@@ -84,8 +87,10 @@ struct SurfaceGraph {
              const std::vector<std::array<int, 3>>& rawFaces, int threads = 0);
 
  private:
-  // A two-face edge used twice in the same direction means the orientation flips there.
-  bool CheckOrientation(int threads) const;
+  // A two-face edge used twice in the same direction means the orientation flips there; sets
+  // consistentlyOriented, closed and volume.
+  void CheckOrientation(int threads);
+  static std::size_t RemoveRepeatedFaces(std::vector<std::array<int, 3>>& faces, int n);
 };
 
 // Builds the graph from any vcglib triangle mesh (vertex and face containers with

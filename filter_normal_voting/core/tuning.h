@@ -17,6 +17,9 @@ constexpr double kAutoCapPerK2 = 16.0;
 // ... and never fewer than this (small k on irregular meshes) nor more than kMaxCap.
 constexpr int kAutoCapMin = 1024;
 constexpr int kMaxCap = 10000000;
+// The automatic cap grows with k only up to the largest k the parameter table accepts: an
+// absolute radius of 1e30 on a 6,000-vertex part marched the whole mesh from every vertex.
+constexpr double kAutoCapMaxK = 50.0;
 
 // --- Degenerate input --------------------------------------------------------------------------
 

@@ -67,6 +67,7 @@ struct Summary {
   std::size_t unreferencedVertices = 0;
   std::size_t degenerateFaces = 0;  // zero-area faces: used for distances, not for votes
   std::size_t droppedFaces = 0;     // faces with a repeated or non-finite vertex
+  std::size_t repeatedFaces = 0;    // faces with the same three vertices as an earlier one: counted once
   bool consistentlyOriented = true;
   bool signAwareUsed = true;
   double meanEdge = 0, radius = 0, epsilon = 0, eta = 0;

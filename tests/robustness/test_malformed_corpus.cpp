@@ -105,13 +105,20 @@ TEST(MalformedCorpus, EveryCaseEndsDefinedOrRefused) {
     ASSERT_EQ(m.vert.size(), res.size());
     for (std::size_t v = 0; v < res.size(); ++v) {
       EXPECT_TRUE(AllFinite(res[v])) << "vertex " << v;
-      if (res[v].cls == nvv::VertexClass::Invalid) EXPECT_EQ(0, res[v].flags) << "vertex " << v;
-      if (m.vert[v].IsD()) EXPECT_EQ(nvv::VertexClass::Invalid, res[v].cls) << "vertex " << v;
+      if (res[v].cls == nvv::VertexClass::Invalid) {
+        EXPECT_EQ(0, res[v].flags) << "vertex " << v;
+      }
+      if (m.vert[v].IsD()) {
+        EXPECT_EQ(nvv::VertexClass::Invalid, res[v].cls) << "vertex " << v;
+      }
     }
     // Writing the results must not break the mesh either.
     nvv::ApplyResults<TMesh>::Apply(m, res, c.options);
-    for (const auto& v : m.vert)
-      if (!v.IsD()) EXPECT_TRUE(std::isfinite(v.cQ()));
+    for (const auto& v : m.vert) {
+      if (!v.IsD()) {
+        EXPECT_TRUE(std::isfinite(v.cQ()));
+      }
+    }
   }
   std::printf("[corpus] %zu cases (every %zu-th run): %d defined results, %d refusals; slowest %.2f s (%s)\n",
               corpus.size(), CorpusStride(), ran, refused, slowest, slowestName.c_str());
