@@ -412,7 +412,8 @@ class Parser {
   bool ReadFaces(const Element& e, bool strips) {
     const char* what = strips ? "tristrips" : "face";
     if (e.count > 0 && !haveVertex_) return Fail(std::string("the file has ") + what + " but no vertex element");
-    if (!strips) out_.triangles.reserve(std::size_t(e.count));
+    // A face record takes at least 4 bytes (binary: count and 3 one-byte indices; ascii "3 0 1 2").
+    if (!strips) out_.triangles.reserve(std::size_t(std::min<std::uint64_t>(e.count, (size_ - pos_) / 4)));
     std::vector<std::int64_t> idx;
     for (std::uint64_t r = 0; r < e.count; ++r) {
       for (const Prop& p : e.props) {

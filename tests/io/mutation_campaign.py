@@ -265,7 +265,7 @@ MUTATIONS = [("bitflip", m_bitflip), ("insert", m_insert), ("delete", m_delete),
 
 def is_sanitized(nvv):
     with open(nvv, "rb") as f:
-        return b"AddressSanitizer" in f.read()
+        return b"__asan_init" in f.read()  # statically or dynamically linked runtime
 
 
 def run_one(nvv, path, out, timeout, memory_mb, sanitized):
