@@ -554,7 +554,8 @@ TEST(ObjReader, RelativeAndSlashedIndices) {
 
 TEST(ObjReader, BadIndicesAreRefused) {
   for (const char* f : {"f -2147483648 1 2", "f 1 2 -2147483649", "f 2147483648 1 2", "f 1 2 99999999999999999999999",
-                        "f 0 1 2", "f 1 2 4", "f 1 2 -4", "f 1 2 x", "f /1 2 3", "f 1 2", "f 1", "f"}) {
+                        "f 0 1 2", "f 1 2 4", "f 1 2 -4", "f 1 2 x", "f /1 2 3", "f 1 2", "f 1", "f",
+                        "f 1 2 3 100", "f 1 2 3 -9", "f 1 2 3 0 1"}) {
     SCOPED_TRACE(f);
     const Result r = Read(std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\n") + f + "\n", MeshFormat::Obj);
     EXPECT_FALSE(r.ok);
