@@ -4,6 +4,8 @@
 #                       OpenMP only; templates remain only where a vcglib mesh meets it
 #   nvv_filter<SUFFIX>  the filter as users run it (filter_normal_voting/filter): the parameter
 #                       table and the run sequence; its headers write onto vcglib meshes
+#   nvv_mesh_io<SUFFIX> the mesh file readers (PLY, OBJ, OFF, STL) of filter_normal_voting/io:
+#                       plain C++, no vcglib, no Qt
 #
 #   nvv_add_libraries(SUFFIX VCGLIB <dir> [COMPILE_OPTIONS ...] [LINK_OPTIONS ...])
 # A second SUFFIX builds the same sources again with other options (the AddressSanitizer twin
@@ -18,6 +20,8 @@ set(NVV_CORE_SOURCES
 list(TRANSFORM NVV_CORE_SOURCES PREPEND "${NVV_SOURCE_ROOT}/filter_normal_voting/core/")
 set(NVV_FILTER_SOURCES filter_options.cpp run_filter.cpp)
 list(TRANSFORM NVV_FILTER_SOURCES PREPEND "${NVV_SOURCE_ROOT}/filter_normal_voting/filter/")
+set(NVV_MESH_IO_SOURCES mesh_reader.cpp read_ply.cpp read_obj.cpp read_off.cpp read_stl.cpp)
+list(TRANSFORM NVV_MESH_IO_SOURCES PREPEND "${NVV_SOURCE_ROOT}/filter_normal_voting/io/")
 
 function(nvv_add_libraries suffix)
   cmake_parse_arguments(A "" "VCGLIB" "COMPILE_OPTIONS;LINK_OPTIONS" ${ARGN})
@@ -26,6 +30,7 @@ function(nvv_add_libraries suffix)
   endif()
   set(core nvv_core${suffix})
   set(filter nvv_filter${suffix})
+  set(io nvv_mesh_io${suffix})
   add_library(${core} STATIC ${NVV_CORE_SOURCES})
   # Headers are included as "core/x.h", "filter/x.h", "io/x.h" (and "x.h" within the core).
   target_include_directories(${core} PUBLIC "${NVV_SOURCE_ROOT}/filter_normal_voting" "${NVV_SOURCE_ROOT}")
@@ -33,7 +38,9 @@ function(nvv_add_libraries suffix)
   add_library(${filter} STATIC ${NVV_FILTER_SOURCES})
   target_include_directories(${filter} SYSTEM PUBLIC "${A_VCGLIB}")
   target_link_libraries(${filter} PUBLIC ${core})
-  foreach(t ${core} ${filter})
+  add_library(${io} STATIC ${NVV_MESH_IO_SOURCES})
+  target_include_directories(${io} PUBLIC "${NVV_SOURCE_ROOT}/filter_normal_voting")
+  foreach(t ${core} ${filter} ${io})
     set_target_properties(${t} PROPERTIES POSITION_INDEPENDENT_CODE ON)
     target_compile_options(${t} PRIVATE -Wall -Wextra ${A_COMPILE_OPTIONS})
     if(A_LINK_OPTIONS)

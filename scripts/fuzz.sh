@@ -1,14 +1,34 @@
 #!/usr/bin/env bash
-# Fuzzes the core (mesh + parameters) with libFuzzer + AddressSanitizer + UBSan.
-# Usage: scripts/fuzz.sh [SECONDS=300]   Crashes land in fuzz/findings/; add each one to
-# tests/robustness as a regression case once fixed. The corpus grows in build-fuzz/corpus/.
+# Fuzzes with libFuzzer + AddressSanitizer + UBSan: the core (mesh + parameters) and each mesh
+# reader (PLY, OBJ, OFF, STL), one after the other, each for SECONDS.
+# Usage: scripts/fuzz.sh [SECONDS=300] [TARGET...]   TARGET: core ply obj off stl (default: all)
+# Crashes land in fuzz/findings/ (named after the target); add each one as a regression case
+# once fixed (tests/robustness for the core, tests/io for the readers). The corpora grow in
+# build-fuzz/corpus/ (core) and build-fuzz/corpus-<format>/, the readers starting from the
+# committed seeds in fuzz/seeds/<format>/.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
 seconds=${1:-300}
+shift || true
+targets=("$@")
+[ ${#targets[@]} -eq 0 ] && targets=(core ply obj off stl)
+for t in "${targets[@]}"; do
+  case "$t" in core|ply|obj|off|stl) ;; *) echo "unknown fuzz target '$t' (core ply obj off stl)" >&2; exit 2 ;; esac
+done
 CXX=clang++-14 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNVV_BUILD_FUZZ=ON \
   -DNVV_BUILD_TESTS=OFF -DNVV_BUILD_PLUGIN=OFF -DNVV_BUILD_CLI=OFF >/dev/null
-ninja -C build-fuzz nvv_fuzz_core
-mkdir -p build-fuzz/corpus fuzz/findings
-ASAN_OPTIONS=detect_leaks=1 ./build-fuzz/fuzz/nvv_fuzz_core -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
-  -artifact_prefix=fuzz/findings/ -print_final_stats=1 build-fuzz/corpus
+ninja -C build-fuzz "${targets[@]/#/nvv_fuzz_}"
+mkdir -p fuzz/findings
+for t in "${targets[@]}"; do
+  echo "== fuzzing $t for $seconds s"
+  if [ "$t" = core ]; then
+    mkdir -p build-fuzz/corpus
+    ASAN_OPTIONS=detect_leaks=1 ./build-fuzz/fuzz/nvv_fuzz_core -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
+      -artifact_prefix=fuzz/findings/ -print_final_stats=1 build-fuzz/corpus
+  else
+    mkdir -p "build-fuzz/corpus-$t"
+    ASAN_OPTIONS=detect_leaks=1 "./build-fuzz/fuzz/nvv_fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+      -max_len=65536 -artifact_prefix="fuzz/findings/$t-" -print_final_stats=1 "build-fuzz/corpus-$t" "fuzz/seeds/$t"
+  fi
+done

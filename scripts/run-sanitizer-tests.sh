@@ -16,9 +16,9 @@ case "$mode" in
     # The same mechanism as the normal test build of run-tests.sh (NVV_SANITIZE_TESTS), alone.
     cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNVV_SANITIZE_TESTS=address \
       -DNVV_BUILD_PLUGIN=OFF >/dev/null
-    ninja -C "$build" -j "$jobs" nvv_core_tests nvv_robustness_tests nvv_result_ply_tests nvv_cli_tests nvv_cli
+    ninja -C "$build" -j "$jobs" nvv_core_tests nvv_robustness_tests nvv_result_ply_tests nvv_cli_tests nvv_cli nvv_io_tests
     source scripts/sanitizer-env.sh
-    ctest --test-dir "$build" --output-on-failure -j "$jobs" -R "^(GeodesicMarch|Pass|Invariance|Determinism|Cancellation|Degenerate|FilterOptions|ApplyResults|MalformedCorpus|AbsurdParameters|ResultPly|Cli)"
+    ctest --test-dir "$build" --output-on-failure -j "$jobs" -R "^(GeodesicMarch|Pass|Invariance|Determinism|Cancellation|Degenerate|FilterOptions|ApplyResults|MalformedCorpus|AbsurdParameters|ResultPly|Cli|PlyReader|ObjReader|OffReader|StlReader|MeshFiles)"
     ;;
   thread)
     archer=$(ls /usr/lib/llvm-14/lib/libarcher.so 2>/dev/null || true)

@@ -16,6 +16,7 @@
 #   BUILD_DIR=build-tests   main build folder (--quick: build-quick)
 #   NVV_SANITIZERS=0        no AddressSanitizer in part 1, skip part 2
 #   NVV_MESHLAB2025=0       skip part 3
+#   NVV_FUZZ_SECONDS=30     seconds of fuzzing per target after part 1 (0: none)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
@@ -80,6 +81,15 @@ ninja -C "$build" -j "$(nproc)"
 part "main tests"
 source scripts/sanitizer-env.sh
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)" 2>&1 | tee "$logs/main.ctest.log"
+
+# A few minutes of coverage-guided fuzzing of the core and of each mesh reader (clang's
+# libFuzzer), from the committed seeds; any finding fails the run (it lands in fuzz/findings/).
+if [ "${NVV_FUZZ_SECONDS:-30}" != 0 ]; then
+  part "fuzzing, ${NVV_FUZZ_SECONDS:-30} s per target"
+  bash scripts/fuzz.sh "${NVV_FUZZ_SECONDS:-30}" > "$logs/fuzz.txt" 2>&1 ||
+    { tail -60 "$logs/fuzz.txt"; echo "run-tests: fuzzing found a crash (fuzz/findings/)" >&2; exit 1; }
+  grep -E "^== fuzzing|stat::number_of_executed_units|cov: .* (DONE|done)" "$logs/fuzz.txt" || true
+fi
 
 if [ "${NVV_SANITIZERS:-1}" != 0 ]; then
   part "thread sanitizer"

@@ -1,7 +1,8 @@
-// Loading a mesh for the command-line tool with vcglib's importers (PLY, OBJ, OFF, STL), then
-// preparing it the way MeshLab does when it opens a file, so the tool and the plugin see the
-// same mesh: STL triangle soups are welded, and when the file has no vertex normals they are
-// computed angle-weighted and normalized. Vertices keep the file's order (except STL welding).
+// Loading a mesh for the command-line tool with the project's own readers (io/mesh_reader.h:
+// PLY, OBJ, OFF, STL, written for untrusted files), then preparing it the way MeshLab does when
+// it opens a file, so the tool and the plugin see the same mesh: STL triangle soups are welded,
+// and when the file has no vertex normals they are computed angle-weighted and normalized.
+// Vertices keep the file's order (except STL welding).
 #ifndef NVV_CLI_LOAD_MESH_H
 #define NVV_CLI_LOAD_MESH_H
 
@@ -11,17 +12,14 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <string>
 
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/update/normal.h>
-#include <wrap/io_trimesh/import_obj.h>
-#include <wrap/io_trimesh/import_off.h>
-#include <wrap/io_trimesh/import_ply.h>
-#include <wrap/io_trimesh/import_stl.h>
+
+#include "io/mesh_reader.h"
 
 namespace nvv_cli {
 
@@ -29,7 +27,7 @@ struct LoadInfo {
   std::string format;           // "PLY", "OBJ", "OFF" or "STL"
   bool fileNormals = false;     // the file had per-vertex normals (kept as they are)
   int weldedVertices = 0;       // STL: vertices merged or dropped by welding
-  std::string warning;          // a non-fatal importer message, or empty
+  std::string warning;          // a non-fatal reader message, or empty
 };
 
 // Lower-case extension with its dot ("" when there is none).
@@ -42,31 +40,9 @@ inline std::string Extension(const std::string& path) {
   return e;
 }
 
-// vcglib's STL importer takes any file it cannot parse for an empty ASCII STL; accept only
-// files that are either a binary STL of the right size or start with "solid".
-inline bool LooksLikeStl(const std::string& path) {
-  FILE* fp = std::fopen(path.c_str(), "rb");
-  if (!fp) return false;
-  std::fseek(fp, 0, SEEK_END);
-  const long size = std::ftell(fp);
-  std::fseek(fp, 0, SEEK_SET);
-  char head[84] = {0};
-  const std::size_t got = std::fread(head, 1, sizeof head, fp);
-  std::fclose(fp);
-  if (got == sizeof head) {
-    std::uint32_t n;
-    std::memcpy(&n, head + 80, 4);
-    if (size == long(84 + 50 * std::uint64_t(n))) return true;
-  }
-  std::size_t i = 0;
-  while (i < got && std::isspace(static_cast<unsigned char>(head[i]))) ++i;
-  return got - i >= 5 && std::strncmp(head + i, "solid", 5) == 0;
-}
-
 // Loads `path` into m. On failure returns false with a short reason in `error`.
 template <class MeshType>
 bool LoadMesh(const std::string& path, MeshType& m, LoadInfo& info, std::string& error) {
-  namespace io = vcg::tri::io;
   m.Clear();
   info = LoadInfo();
   struct stat st;
@@ -78,76 +54,52 @@ bool LoadMesh(const std::string& path, MeshType& m, LoadInfo& info, std::string&
     error = "is a directory, not a mesh file";
     return false;
   }
-  FILE* probe = std::fopen(path.c_str(), "rb");
-  if (!probe) {
-    error = std::string("cannot open: ") + std::strerror(errno);
-    return false;
-  }
-  std::fclose(probe);
-
-  const std::string ext = Extension(path);
-  int mask = 0;
-  int err = 0;
-  bool critical = false;
-  const char* msg = "";
-  if (ext == ".ply") {
-    info.format = "PLY";
-    err = io::ImporterPLY<MeshType>::Open(m, path.c_str(), mask);
-    critical = io::ImporterPLY<MeshType>::ErrorCritical(err);
-    msg = io::ImporterPLY<MeshType>::ErrorMsg(err);
-  } else if (ext == ".off") {
-    info.format = "OFF";
-    err = io::ImporterOFF<MeshType>::Open(m, path.c_str(), mask);
-    critical = err != 0;
-    msg = io::ImporterOFF<MeshType>::ErrorMsg(err);
-  } else if (ext == ".obj") {
-    info.format = "OBJ";
-    err = io::ImporterOBJ<MeshType>::Open(m, path.c_str(), mask);
-    critical = io::ImporterOBJ<MeshType>::ErrorCritical(err);
-    msg = io::ImporterOBJ<MeshType>::ErrorMsg(err);
-  } else if (ext == ".stl") {
-    info.format = "STL";
-    if (!LooksLikeStl(path)) {
-      error = "not a valid STL file (neither a binary STL of the right size nor ASCII 'solid')";
-      return false;
-    }
-    err = io::ImporterSTL<MeshType>::Open(m, path.c_str(), mask);
-    critical = err != 0;
-    msg = io::ImporterSTL<MeshType>::ErrorMsg(err);
-  } else {
+  nvv::io::MeshFormat format;
+  if (!nvv::io::FormatFromPath(path, format)) {
+    const std::string ext = Extension(path);
     error = "unsupported file format '" + (ext.empty() ? std::string("(no extension)") : ext) +
             "' (nvv reads .ply, .obj, .off and .stl)";
     return false;
   }
-  if (critical) {
-    error = std::string("cannot read ") + info.format + " file: " + msg;
-    m.Clear();
-    return false;
-  }
-  // vcglib's OFF importer does not check face indices: refuse faces that point outside the
-  // vertex array rather than hand the filter dangling pointers.
-  if (!m.vert.empty() || !m.face.empty()) {
-    const std::uintptr_t first = reinterpret_cast<std::uintptr_t>(m.vert.data());
-    const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(m.vert.data() + m.vert.size());
-    for (std::size_t f = 0; f < m.face.size(); ++f)
-      for (int j = 0; j < 3; ++j) {
-        const std::uintptr_t p = reinterpret_cast<std::uintptr_t>(m.face[f].cV(j));
-        if (!m.face[f].IsD() && (p < first || p >= end)) {
-          error = "corrupt " + info.format + " file: face " + std::to_string(f) + " refers to a vertex that does not exist";
-          m.Clear();
-          return false;
-        }
-      }
-  }
-  if (err != 0 && !(info.format == "PLY" && err == vcg::tri::io::PlyInfo::E_NO_FACE)) info.warning = msg;
+  info.format = nvv::io::FormatName(format);
+  nvv::io::MeshData d;
+  if (!nvv::io::ReadMeshFile(path, d, error)) return false;
 
-  if (info.format == "STL") {
+  typedef typename MeshType::ScalarType S;
+  const std::size_t nv = d.positions.size();
+  if (nv > 0) vcg::tri::Allocator<MeshType>::AddVertices(m, nv);
+  for (std::size_t i = 0; i < nv; ++i) {
+    auto& v = m.vert[i];
+    v.P() = vcg::Point3<S>(S(d.positions[i][0]), S(d.positions[i][1]), S(d.positions[i][2]));
+    if (vcg::tri::HasPerVertexNormal(m) && !d.normals.empty())
+      v.N() = vcg::Point3<S>(S(d.normals[i][0]), S(d.normals[i][1]), S(d.normals[i][2]));
+    // Colour and quality as MeshLab's importers leave them: the file's, else white and, for PLY,
+    // quality 1 (the other importers keep the component's default).
+    if (vcg::tri::HasPerVertexColor(m))
+      v.C() = d.colors.empty() ? vcg::Color4b(vcg::Color4b::White)
+                               : vcg::Color4b(d.colors[i][0], d.colors[i][1], d.colors[i][2], d.colors[i][3]);
+    if (vcg::tri::HasPerVertexQuality(m)) {
+      if (!d.quality.empty()) v.Q() = d.quality[i];
+      else if (format == nvv::io::MeshFormat::Ply) v.Q() = typename MeshType::VertexType::QualityType(1);
+    }
+  }
+  if (!d.triangles.empty()) {
+    auto fi = vcg::tri::Allocator<MeshType>::AddFaces(m, d.triangles.size());
+    for (const auto& t : d.triangles) {
+      for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[std::size_t(t[k])];
+      ++fi;
+    }
+  }
+  if (d.skippedElements > 0 && format == nvv::io::MeshFormat::Obj)
+    info.warning = std::to_string(d.skippedElements) + " line or point elements skipped";
+
+  if (format == nvv::io::MeshFormat::Stl) {
     const int dup = vcg::tri::Clean<MeshType>::RemoveDuplicateVertex(m);
     const int unref = vcg::tri::Clean<MeshType>::RemoveUnreferencedVertex(m);
     vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
     info.weldedVertices = dup + unref;
   }
-  info.fileNormals = (mask & io::Mask::IOM_VERTNORMAL) != 0;
+  info.fileNormals = !d.normals.empty();
   if (!info.fileNormals && vcg::tri::HasPerVertexNormal(m)) {
     vcg::tri::UpdateNormal<MeshType>::PerVertexAngleWeighted(m);
     vcg::tri::UpdateNormal<MeshType>::NormalizePerVertex(m);

@@ -58,10 +58,14 @@ std::vector<std::string> HeaderComments(const nvv_cli::CliArgs& a) {
   return c;
 }
 
+// The input file, for the messages of main()'s last-resort handlers.
+std::string gInput;
+
 int Run(int argc, char** argv) {
   nvv_cli::CliArgs a;
   const std::string argError = nvv_cli::ParseArgs(argc, argv, a);
   if (!argError.empty()) return Fail(kBadArguments, argError);
+  gInput = a.input;
   if (a.help) {
     std::fputs(nvv_cli::HelpText().c_str(), stdout);
     return kOk;
@@ -115,8 +119,8 @@ int main(int argc, char** argv) {
   try {
     return Run(argc, argv);
   } catch (const std::bad_alloc&) {
-    return Fail(kRefused, "out of memory");
+    return Fail(kRefused, (gInput.empty() ? std::string() : gInput + ": ") + "out of memory");
   } catch (const std::exception& e) {
-    return Fail(kBadInput, e.what());
+    return Fail(kBadInput, (gInput.empty() ? std::string() : gInput + ": ") + e.what());
   }
 }

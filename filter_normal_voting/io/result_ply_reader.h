@@ -187,14 +187,14 @@ struct Slot {
   bool isFloat;
 };
 inline std::map<std::string, Slot> VertexSlots() {
-  std::map<std::string, Slot> slots;
+  std::map<std::string, Slot> where;  // (not "slots": Qt defines it as a macro)
   ResultPlyVertex probe;
   const char* base = reinterpret_cast<const char*>(&probe);
   ForEachResultPlyField(probe, [&](const char* name, auto& field) {
     typedef typename std::decay<decltype(field)>::type T;
-    slots[name] = Slot{reinterpret_cast<const char*>(&field) - base, std::is_same<T, float>::value};
+    where[name] = Slot{reinterpret_cast<const char*>(&field) - base, std::is_same<T, float>::value};
   });
-  return slots;
+  return where;
 }
 
 // Element e's records: vertex properties into out.vertices through `where`, the face list

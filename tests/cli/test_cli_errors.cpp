@@ -53,6 +53,21 @@ TEST_F(CliErrors, CorruptInputIs3) {
   ExpectFailure(3, {dir_.Path(), Out()}, "directory");
 }
 
+TEST_F(CliErrors, FilesThatAreNotRegularOrAreEmptyAre3) {
+  // A FIFO must be refused at once, not waited on; /dev/zero under a mesh name must not be read.
+  const std::string fifo = dir_.File("pipe.ply");
+  ASSERT_EQ(0, ::mkfifo(fifo.c_str(), 0600));
+  ExpectFailure(3, {fifo, Out()}, "FIFO");
+  const std::string zero = dir_.File("zero.stl");
+  ASSERT_EQ(0, ::symlink("/dev/zero", zero.c_str()));
+  ExpectFailure(3, {zero, Out()}, "device");
+  for (const char* name : {"empty.ply", "empty.obj", "empty.off", "empty.stl"})
+    ExpectFailure(3, {Write(name, ""), Out()}, name);
+  // A huge count in a tiny file is refused before anything is allocated.
+  ExpectFailure(3, {Write("huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 100000000\nproperty float x\n"
+                                      "property float y\nproperty float z\nend_header\n"), Out()}, "huge.ply");
+}
+
 TEST_F(CliErrors, UnsupportedExtensionIs3) {
   ExpectFailure(3, {Write("mesh.xyz", "0 0 0\n"), Out()}, ".xyz");
   ExpectFailure(3, {Write("mesh", "OFF\n0 0 0\n"), Out()}, "no extension");

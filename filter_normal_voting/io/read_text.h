@@ -1,0 +1,64 @@
+// Line and token walking for the text readers (OBJ, OFF, ascii STL). Not part of the public
+// interface.
+#ifndef NVV_IO_READ_TEXT_H
+#define NVV_IO_READ_TEXT_H
+
+#include <vector>
+
+#include "io/mesh_reader_internal.h"
+
+namespace nvv {
+namespace io {
+namespace detail {
+
+// Walks a buffer line by line; each line split into tokens, '#' starting a comment.
+class LineReader {
+ public:
+  LineReader(const char* data, std::size_t size) : data_(data), size_(size) {}
+  // Next line with at least one token; false at the end of the data.
+  bool Next(std::vector<Token>& tokens) {
+    while (pos_ < size_) {
+      const std::size_t b = pos_;
+      std::size_t e = b;
+      while (e < size_ && data_[e] != '\n') ++e;
+      pos_ = e < size_ ? e + 1 : size_;
+      ++line_;
+      tokens.clear();
+      std::size_t i = b;
+      while (i < e) {
+        while (i < e && IsBlank(data_[i])) ++i;
+        if (i >= e || data_[i] == '#') break;
+        const std::size_t t = i;
+        while (i < e && !IsBlank(data_[i]) && data_[i] != '#') ++i;
+        tokens.push_back(Token{data_ + t, data_ + i});
+      }
+      if (!tokens.empty()) return true;
+    }
+    return false;
+  }
+  std::size_t Line() const { return line_; }
+  std::size_t Remaining() const { return size_ - pos_; }
+
+ private:
+  const char* data_;
+  std::size_t size_;
+  std::size_t pos_ = 0;
+  std::size_t line_ = 0;
+};
+
+inline bool TokenIs(const Token& t, const char* s) {
+  const std::size_t n = std::strlen(s);
+  return std::size_t(t.e - t.b) == n && std::memcmp(t.b, s, n) == 0;
+}
+
+inline bool OnlySpace(const char* data, std::size_t size) {
+  for (std::size_t i = 0; i < size; ++i)
+    if (!IsSpace(data[i])) return false;
+  return true;
+}
+
+}  // namespace detail
+}  // namespace io
+}  // namespace nvv
+
+#endif
