@@ -114,6 +114,49 @@ class Parser {
   }
 
   // --- header --------------------------------------------------------------------------------
+  // 'element NAME COUNT': a new element, `cur` from now on.
+  bool ElementLine(const std::vector<std::string>& tok, std::size_t line, Element*& cur) {
+    if (tok.size() != 3) return Fail("header line " + std::to_string(line) + ": 'element' needs a name and a count");
+    std::int64_t n;
+    if (!ParseInt(tok[2].data(), tok[2].data() + tok[2].size(), n) || n < 0)
+      return Fail("header line " + std::to_string(line) + ": element count '" + tok[2].substr(0, 40) +
+                  "' is not a non-negative integer");
+    for (const Element& e : elements_)
+      if (e.name == tok[1]) return Fail("header line " + std::to_string(line) + ": element '" + tok[1].substr(0, 40) + "' declared twice");
+    if (elements_.size() >= 1000) return Fail("the header declares more than 1000 elements");
+    elements_.emplace_back();
+    cur = &elements_.back();
+    cur->name = tok[1];
+    cur->count = std::uint64_t(n);
+    cur->headerLine = line;
+    return true;
+  }
+
+  // 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME' of element `cur`.
+  bool PropertyLine(const std::vector<std::string>& tok, std::size_t line, Element* cur) {
+    if (!cur) return Fail("header line " + std::to_string(line) + ": a property before any element");
+    if (cur->props.size() >= 1000) return Fail("element '" + cur->name.substr(0, 40) + "' has more than 1000 properties");
+    Prop pr;
+    if (tok.size() == 5 && tok[1] == "list") {
+      pr.count = TypeFromName(tok[2]);
+      pr.type = TypeFromName(tok[3]);
+      pr.name = tok[4];
+      if (pr.count == PlyType::None || pr.type == PlyType::None)
+        return Fail("header line " + std::to_string(line) + ": unknown list type");
+      if (!IsIntegerType(pr.count))
+        return Fail("header line " + std::to_string(line) + ": a list's count type must be an integer type");
+    } else if (tok.size() == 3) {
+      pr.type = TypeFromName(tok[1]);
+      pr.name = tok[2];
+      if (pr.type == PlyType::None)
+        return Fail("header line " + std::to_string(line) + ": unknown property type '" + tok[1].substr(0, 40) + "'");
+    } else {
+      return Fail("header line " + std::to_string(line) + ": malformed 'property' line");
+    }
+    cur->props.push_back(pr);
+    return true;
+  }
+
   bool ParseHeader() {
     std::size_t p = 0, line = 0;
     bool sawFormat = false;
@@ -161,42 +204,11 @@ class Parser {
         continue;
       }
       if (k == "element") {
-        if (tok.size() != 3) return Fail("header line " + std::to_string(line) + ": 'element' needs a name and a count");
-        std::int64_t n;
-        if (!ParseInt(tok[2].data(), tok[2].data() + tok[2].size(), n) || n < 0)
-          return Fail("header line " + std::to_string(line) + ": element count '" + tok[2].substr(0, 40) +
-                      "' is not a non-negative integer");
-        for (const Element& e : elements_)
-          if (e.name == tok[1]) return Fail("header line " + std::to_string(line) + ": element '" + tok[1].substr(0, 40) + "' declared twice");
-        if (elements_.size() >= 1000) return Fail("the header declares more than 1000 elements");
-        elements_.emplace_back();
-        cur = &elements_.back();
-        cur->name = tok[1];
-        cur->count = std::uint64_t(n);
-        cur->headerLine = line;
+        if (!ElementLine(tok, line, cur)) return false;
         continue;
       }
       if (k == "property") {
-        if (!cur) return Fail("header line " + std::to_string(line) + ": a property before any element");
-        if (cur->props.size() >= 1000) return Fail("element '" + cur->name.substr(0, 40) + "' has more than 1000 properties");
-        Prop pr;
-        if (tok.size() == 5 && tok[1] == "list") {
-          pr.count = TypeFromName(tok[2]);
-          pr.type = TypeFromName(tok[3]);
-          pr.name = tok[4];
-          if (pr.count == PlyType::None || pr.type == PlyType::None)
-            return Fail("header line " + std::to_string(line) + ": unknown list type");
-          if (!IsIntegerType(pr.count))
-            return Fail("header line " + std::to_string(line) + ": a list's count type must be an integer type");
-        } else if (tok.size() == 3) {
-          pr.type = TypeFromName(tok[1]);
-          pr.name = tok[2];
-          if (pr.type == PlyType::None)
-            return Fail("header line " + std::to_string(line) + ": unknown property type '" + tok[1].substr(0, 40) + "'");
-        } else {
-          return Fail("header line " + std::to_string(line) + ": malformed 'property' line");
-        }
-        cur->props.push_back(pr);
+        if (!PropertyLine(tok, line, cur)) return false;
         continue;
       }
       return Fail("header line " + std::to_string(line) + ": unknown keyword '" + k.substr(0, 40) + "'");

@@ -51,6 +51,14 @@ inline bool TokenIs(const Token& t, const char* s) {
   return std::size_t(t.e - t.b) == n && std::memcmp(t.b, s, n) == 0;
 }
 
+// A colour component as a byte: 0-255 as written, or 0-1 when `unit` (scaled and rounded).
+inline std::uint8_t ColorByte(double v, bool unit) {
+  if (unit) v = v * 255.0 + 0.5;
+  if (!(v > 0)) return 0;
+  if (v >= 255) return 255;
+  return std::uint8_t(v);
+}
+
 inline bool OnlySpace(const char* data, std::size_t size) {
   for (std::size_t i = 0; i < size; ++i)
     if (!IsSpace(data[i])) return false;
