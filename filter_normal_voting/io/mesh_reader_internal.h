@@ -80,6 +80,19 @@ inline bool ParseInt(const char* b, const char* e, std::int64_t& value) {
 }
 
 // Splits the line [b, e) into whitespace-separated tokens (at most `max`, the rest counted).
+// What every reader holds: the file's bytes, the mesh it fills, where the reason for a refusal
+// goes, and the limits it reads within.
+class ReaderBase {
+ protected:
+  ReaderBase(const char* data, std::size_t size, MeshData& out, std::string& error, const ReadLimits& limits)
+      : data_(data), size_(size), out_(out), error_(error), limits_(limits) {}
+  const char* data_;
+  std::size_t size_;
+  MeshData& out_;
+  std::string& error_;
+  const ReadLimits& limits_;
+};
+
 struct Token {
   const char* b;
   const char* e;

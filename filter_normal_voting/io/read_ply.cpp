@@ -71,10 +71,10 @@ bool HostIsLittleEndian() {
   return b == 1;
 }
 
-class Parser {
+class Parser : ReaderBase {
  public:
   Parser(const char* data, std::size_t size, MeshData& out, std::string& error, const ReadLimits& limits)
-      : data_(data), size_(size), out_(out), error_(error), limits_(limits) {}
+      : ReaderBase(data, size, out, error, limits) {}
 
   bool Run() {
     if (!ParseHeader()) return false;
@@ -91,11 +91,6 @@ class Parser {
   }
 
  private:
-  const char* data_;
-  std::size_t size_;
-  MeshData& out_;
-  std::string& error_;
-  const ReadLimits& limits_;
   std::vector<Element> elements_;
   Encoding encoding_ = Encoding::Ascii;
   bool swap_ = false;

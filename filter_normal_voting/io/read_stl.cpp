@@ -41,10 +41,10 @@ bool ReadBinary(const char* data, std::size_t size, std::uint64_t facets, MeshDa
   return true;
 }
 
-class AsciiStl {
+class AsciiStl : ReaderBase {
  public:
   AsciiStl(const char* data, std::size_t size, MeshData& out, std::string& error, const ReadLimits& limits)
-      : data_(data), size_(size), out_(out), error_(error), limits_(limits) {}
+      : ReaderBase(data, size, out, error, limits) {}
 
   bool Run() {
     if (!Next() || !Is("solid")) return Fail("an ASCII STL starts with 'solid'");
@@ -94,11 +94,6 @@ class AsciiStl {
   }
 
  private:
-  const char* data_;
-  std::size_t size_;
-  MeshData& out_;
-  std::string& error_;
-  const ReadLimits& limits_;
   std::size_t pos_ = 0, tb_ = 0, te_ = 0;
 
   bool Next() {
