@@ -32,8 +32,13 @@ inline std::string Lower(std::string s) {
 }
 
 // A number in the C locale's format, the whole string, finite.
+// A decimal number as a user writes it (digits, sign, point, exponent): strtod alone would also
+// take hexadecimal ("0x1p4"), "inf" and "nan".
 inline bool ParseNumber(const std::string& s, double& v) {
   if (s.empty()) return false;
+  for (char c : s)
+    if (!std::isdigit(static_cast<unsigned char>(c)) && c != '+' && c != '-' && c != '.' && c != 'e' && c != 'E')
+      return false;
   char* end = nullptr;
   v = std::strtod(s.c_str(), &end);
   return end && *end == '\0' && std::isfinite(v) && !std::isspace(static_cast<unsigned char>(s[0]));

@@ -10,10 +10,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/clean.h>
@@ -41,6 +43,48 @@ inline std::string Extension(const std::string& path) {
 }
 
 // Loads `path` into m. On failure returns false with a short reason in `error`.
+// Angle-weighted, normalized vertex normals, as MeshLab computes them when it opens a file
+// without normals. Faces touching a non-finite vertex are left out (their NaN normal would spread
+// to every neighbour), and where the coordinates are so large or so small that float cross
+// products overflow or underflow, the normals are computed on the mesh scaled to unit size (the
+// positions are restored bit for bit afterwards).
+template <class MeshType>
+void ComputeLoadNormals(MeshType& m) {
+  typedef typename MeshType::CoordType Coord;
+  double extent = 0;
+  for (const auto& v : m.vert)
+    for (int j = 0; j < 3; ++j)
+      if (std::isfinite(v.cP()[j])) extent = std::max(extent, std::abs(double(v.cP()[j])));
+  std::vector<Coord> saved;
+  const bool rescale = extent > 1e15 || (extent > 0 && extent < 1e-15);
+  if (rescale) {
+    saved.reserve(m.vert.size());
+    for (auto& v : m.vert) {
+      saved.push_back(v.cP());
+      v.P() = Coord(v.cP()[0] / extent, v.cP()[1] / extent, v.cP()[2] / extent);
+    }
+  }
+  std::vector<std::size_t> hidden;
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    auto& face = m.face[f];
+    if (face.IsD()) continue;
+    for (int j = 0; j < 3; ++j) {
+      const Coord& p = face.cV(j)->cP();
+      if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
+        face.SetD();
+        hidden.push_back(f);
+        break;
+      }
+    }
+  }
+  vcg::tri::UpdateNormal<MeshType>::PerVertexAngleWeighted(m);
+  vcg::tri::UpdateNormal<MeshType>::NormalizePerVertex(m);
+  for (std::size_t f : hidden) m.face[f].ClearD();
+  for (std::size_t i = 0; i < saved.size(); ++i) m.vert[i].P() = saved[i];
+  for (auto& v : m.vert)
+    if (!(std::isfinite(v.cN()[0]) && std::isfinite(v.cN()[1]) && std::isfinite(v.cN()[2]))) v.N() = Coord(0, 0, 0);
+}
+
 template <class MeshType>
 bool LoadMesh(const std::string& path, MeshType& m, LoadInfo& info, std::string& error) {
   m.Clear();
@@ -100,10 +144,7 @@ bool LoadMesh(const std::string& path, MeshType& m, LoadInfo& info, std::string&
     info.weldedVertices = dup + unref;
   }
   info.fileNormals = !d.normals.empty();
-  if (!info.fileNormals && vcg::tri::HasPerVertexNormal(m)) {
-    vcg::tri::UpdateNormal<MeshType>::PerVertexAngleWeighted(m);
-    vcg::tri::UpdateNormal<MeshType>::NormalizePerVertex(m);
-  }
+  if (!info.fileNormals && vcg::tri::HasPerVertexNormal(m)) ComputeLoadNormals(m);
   return true;
 }
 

@@ -120,6 +120,7 @@ class ApplyResults {
       if (v.IsD()) continue;
       if (res[i].Has(kNormalValid)) v.N() = ToCoord(res[i].normal);
       else if (v.N().Norm() > 0 && std::isfinite(v.N().Norm())) v.N().Normalize();
+      else v.N() = CoordType(0, 0, 0);  // no direction to keep: never a non-finite normal
     }
   }
   static void Quality(MeshType& m, const std::vector<VertexResult>& res, QualityMode mode) {

@@ -81,6 +81,11 @@ TEST_F(CliErrors, BadArgumentsAre2) {
   ExpectFailure(2, {"--crease_angle", "120", good_, Out()}, "crease_angle");
   ExpectFailure(2, {"--corner_angle", "abc", good_, Out()}, "corner_angle");
   ExpectFailure(2, {"--absolute_radius", "nan", good_, Out()});
+  // Only decimal numbers: hexadecimal, infinities and stray characters are refused.
+  ExpectFailure(2, {"--neighbourhood_k", "0x3", good_, Out()}, "neighbourhood_k");
+  ExpectFailure(2, {"--crease_angle", "0x1p5", good_, Out()}, "crease_angle");
+  ExpectFailure(2, {"--absolute_radius", "inf", good_, Out()});
+  ExpectFailure(2, {"--neighbourhood_k", "3 ", good_, Out()});
   ExpectFailure(2, {"--max_neighbourhood", "3.5", good_, Out()});
   ExpectFailure(2, {"--max_neighbourhood", "8", good_, Out()});
   ExpectFailure(2, {"--quality", "colourful", good_, Out()}, "shape_index");
@@ -124,5 +129,34 @@ TEST_F(CliErrors, UnwritableOutputIs5) {
   if (::geteuid() != 0) {
     ASSERT_EQ(0, ::mkdir(dir_.File("ro").c_str(), 0555));
     ExpectFailure(5, {good_, dir_.File("ro/out.ply")});
+  }
+}
+
+// Finite vertices get finite values at any scale the corpus holds, and a NaN vertex does not
+// spread to its neighbours: the normals computed on loading leave such faces out, and are taken
+// on the mesh scaled to unit size where float cross products would overflow or underflow.
+TEST_F(CliErrors, FiniteVerticesGetFiniteValuesAtAnyScaleAndBesideNaN) {
+  for (double scale : {1e-30, 1.0, 1e30}) {
+    Mesh m;
+    nvv_shapes::Cube(m, 1.0, 5);
+    for (auto& v : m.vert) v.P() *= scale;
+    if (scale == 1.0) m.vert[7].P()[0] = std::nan("");
+    const std::string in = dir_.File("scaled.off");
+    ASSERT_EQ(0, vcg::tri::io::ExporterOFF<Mesh>::Save(m, in.c_str()));
+    for (const char* keep : {"true", "false"}) {  // update_normals false: the loaded normals are kept
+      const CliResult r = RunCli({"--update_normals", keep, in, Out()}, dir_);
+      ASSERT_EQ(0, r.exitCode) << r.err;
+      nvv::ResultPlyData d;
+      std::string error;
+      ASSERT_TRUE(nvv::ReadResultPly(Out(), d, error)) << error;
+      for (std::size_t i = 0; i < d.vertices.size(); ++i) {
+        const nvv::ResultPlyVertex& v = d.vertices[i];
+        if (!(std::isfinite(v.position[0]) && std::isfinite(v.position[1]) && std::isfinite(v.position[2]))) continue;
+        EXPECT_TRUE(std::isfinite(v.normal[0]) && std::isfinite(v.normal[1]) && std::isfinite(v.normal[2]))
+            << "scale " << scale << ", update_normals " << keep << ", vertex " << i;
+        EXPECT_TRUE(std::isfinite(v.k1) && std::isfinite(v.k2) && std::isfinite(v.quality)) << i;
+      }
+      std::remove(Out().c_str());
+    }
   }
 }
