@@ -155,6 +155,8 @@ BAD_INDICES = [b"-1", b"0", b"-2147483648", b"2147483647", b"2147483648", b"4294
 
 
 def m_bitflip(rng, d, tag):
+    if not d:  # mutations chain: an earlier one may have left nothing
+        return bytes([rng.randrange(256)])
     b = bytearray(d)
     for _ in range(rng.randint(1, 8)):
         i = rng.randrange(len(b))
@@ -166,19 +168,23 @@ def m_insert(rng, d, tag):
     i = rng.randrange(len(d) + 1)
     if rng.random() < 0.5:
         ins = bytes(rng.randrange(256) for _ in range(rng.randint(1, 16)))
-    else:  # a copied chunk of the file itself
+    elif d:  # a copied chunk of the file itself
         a = rng.randrange(len(d))
         ins = d[a:a + rng.randint(1, 200)]
+    else:
+        ins = b"\n"
     return d[:i] + ins + d[i:]
 
 
 def m_delete(rng, d, tag):
+    if not d:
+        return d
     i = rng.randrange(len(d))
     return d[:i] + d[i + rng.randint(1, 64):]
 
 
 def m_truncate(rng, d, tag):
-    return d[:rng.randrange(len(d))]
+    return d[:rng.randrange(len(d))] if d else d
 
 
 def m_huge_count(rng, d, tag):
@@ -214,6 +220,8 @@ def m_bad_index(rng, d, tag):
     if tag in ("le.ply", "be.ply"):
         e = "<" if tag == "le.ply" else ">"
         # Overwrite one int32 somewhere in the last third of the data (the face records).
+        if len(d) < 16:
+            return m_bitflip(rng, d, tag)
         b = bytearray(d)
         i = rng.randrange(len(b) * 2 // 3, len(b) - 4)
         struct.pack_into(e + "i", b, i, rng.choice([-1, -2 ** 31, 2 ** 31 - 1, len(d), 1 << 20]))
@@ -245,6 +253,8 @@ def m_long_list(rng, d, tag):
 
 def m_odd_number(rng, d, tag):
     if tag in ("le.ply", "be.ply", "bin.stl"):
+        if len(d) < 8:
+            return m_bitflip(rng, d, tag)
         b = bytearray(d)
         for _ in range(rng.randint(1, 4)):
             i = rng.randrange(max(1, len(b) - 4))
