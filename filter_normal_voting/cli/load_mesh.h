@@ -42,7 +42,6 @@ inline std::string Extension(const std::string& path) {
   return e;
 }
 
-// Loads `path` into m. On failure returns false with a short reason in `error`.
 // Angle-weighted, normalized vertex normals, as MeshLab computes them when it opens a file
 // without normals. Faces touching a non-finite vertex are left out (their NaN normal would spread
 // to every neighbour), and where the coordinates are so large or so small that float cross
@@ -85,6 +84,7 @@ void ComputeLoadNormals(MeshType& m) {
     if (!(std::isfinite(v.cN()[0]) && std::isfinite(v.cN()[1]) && std::isfinite(v.cN()[2]))) v.N() = Coord(0, 0, 0);
 }
 
+// Loads `path` into m. On failure returns false with a short reason in `error`.
 template <class MeshType>
 bool LoadMesh(const std::string& path, MeshType& m, LoadInfo& info, std::string& error) {
   m.Clear();

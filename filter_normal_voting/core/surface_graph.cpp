@@ -141,11 +141,12 @@ std::size_t SurfaceGraph::RemoveRepeatedFaces(std::vector<std::array<int, 3>>& f
     std::sort(s.begin(), s.end());
     return s;
   };
+  auto lowest = [](const std::array<int, 3>& f) { return std::size_t(std::min(f[0], std::min(f[1], f[2]))); };
   std::vector<int> start(std::size_t(n) + 1, 0);
-  for (const auto& f : faces) ++start[std::size_t(sorted(f)[0]) + 1];
+  for (const auto& f : faces) ++start[lowest(f) + 1];
   for (int v = 0; v < n; ++v) start[v + 1] += start[v];
   std::vector<int> order(faces.size()), fill(start.begin(), start.end() - 1);
-  for (std::size_t i = 0; i < faces.size(); ++i) order[fill[sorted(faces[i])[0]]++] = int(i);
+  for (std::size_t i = 0; i < faces.size(); ++i) order[fill[lowest(faces[i])]++] = int(i);
   std::vector<std::uint8_t> drop(faces.size(), 0);
   std::size_t count = 0;
   for (int v = 0; v < n; ++v) {
