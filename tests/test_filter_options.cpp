@@ -56,6 +56,43 @@ TEST(FilterOptions, NamesAreUniqueAndEveryParameterIsSettable) {
   EXPECT_TRUE(o.core.stopAtCreases && o.updateNormals);
 }
 
+// The dialog, --help and PyMeshLab offer the table's ranges; the core must accept every value in
+// them (its ranges are the same constants, limits.h), and a value just outside is refused by the
+// table with the range in the message.
+TEST(FilterOptions, TheCoreAcceptsEveryValueTheTableOffers) {
+  for (const auto& spec : nvv::FilterParameterTable()) {
+    if (spec.type != nvv::ParamType::Float && spec.type != nvv::ParamType::Int) continue;
+    const double step = spec.type == nvv::ParamType::Int ? 1.0 : 0.01;
+    for (double v : {spec.minValue, spec.minValue + step, spec.maxValue - step, spec.maxValue}) {
+      nvv::FilterOptions o = nvv::DefaultOptions();
+      ASSERT_EQ("", nvv::SetOption(o, spec.name, v)) << spec.name << " = " << v;
+      EXPECT_EQ("", nvv::ValidateOptions(o)) << spec.name << " = " << v;
+    }
+    nvv::FilterOptions o = nvv::DefaultOptions();
+    const std::string below = nvv::SetOption(o, spec.name, spec.minValue - step);
+    EXPECT_NE(std::string::npos, below.find("outside its range")) << spec.name << ": " << below;
+  }
+}
+
+// Caps below what a uniform mesh holds within the radius still give a defined result.
+TEST(FilterOptions, TinyNeighbourhoodCapsRunToTheEnd) {
+  TMesh m;
+  nvv_shapes::Cube(m, 5.0, 6);
+  for (int cap : {1, 2, 4, 15}) {
+    nvv::Params p = WithK(3);
+    p.maxNeighbourhood = cap;
+    const NvvRun r = RunNvv(m, p);
+    ASSERT_TRUE(r.st.ok) << cap << ": " << r.st.message;
+    EXPECT_EQ(r.res.size(), r.sum.capped) << cap;
+    for (const auto& v : r.res) {
+      EXPECT_TRUE(std::isfinite(v.normal[0]) && std::isfinite(v.k1) && std::isfinite(v.k2)) << cap;
+      if (!v.Has(nvv::kNormalValid)) continue;
+      EXPECT_NEAR(1.0, std::sqrt(v.normal[0] * v.normal[0] + v.normal[1] * v.normal[1] + v.normal[2] * v.normal[2]), 1e-5)
+          << cap;
+    }
+  }
+}
+
 TEST(ApplyResults, WritesOrderedCurvatureClassesAndSelection) {
   TMesh m;
   nvv_shapes::Roof(m, 90.0);

@@ -29,6 +29,10 @@ void ExpectSameGraph(const nvv::SurfaceGraph& a, const nvv::SurfaceGraph& b) {
   EXPECT_TRUE(SameBytes(a.faceEdge, b.faceEdge));
   EXPECT_TRUE(SameBytes(a.vfStart, b.vfStart));
   EXPECT_TRUE(SameBytes(a.vfList, b.vfList));
+  EXPECT_TRUE(SameBytes(a.nonManifoldEdges, b.nonManifoldEdges));
+  EXPECT_TRUE(SameBytes(a.edgeGroupKey, b.edgeGroupKey));
+  EXPECT_TRUE(SameBytes(a.edgeGroupStart, b.edgeGroupStart));
+  EXPECT_TRUE(SameBytes(a.edgeGroupFaces, b.edgeGroupFaces));
   EXPECT_EQ(0, std::memcmp(&a.meanEdge, &b.meanEdge, sizeof(double)));
   EXPECT_EQ(0, std::memcmp(&a.maxArea, &b.maxArea, sizeof(double)));
   EXPECT_EQ(a.consistentlyOriented, b.consistentlyOriented);
@@ -67,6 +71,74 @@ TEST(SurfaceGraph, OneFlippedFaceBreaksOrientationOnAnyThreadCount) {
     EXPECT_FALSE(one.consistentlyOriented) << "face " << which;
     ExpectSameGraph(one, two);
   }
+}
+
+namespace {
+
+// A graph from raw positions and faces.
+nvv::SurfaceGraph Graph(std::vector<Eigen::Vector3d> pos, const std::vector<std::array<int, 3>>& faces) {
+  nvv::SurfaceGraph g;
+  std::vector<std::uint8_t> usable(pos.size(), 1);
+  g.Build(std::move(pos), std::move(usable), faces, 1);
+  return g;
+}
+
+// `pages` triangles on the spine 0-1, page i's third vertex at angle i around the spine.
+nvv::SurfaceGraph Book(int pages) {
+  std::vector<Eigen::Vector3d> pos = {{0, 0, 0}, {0, 0, 1}};
+  std::vector<std::array<int, 3>> faces;
+  for (int i = 0; i < pages; ++i) {
+    const double a = 6.283185307179586 * i / pages;
+    pos.emplace_back(std::cos(a), std::sin(a), 0.5);
+    faces.push_back({0, 1, 2 + i});
+  }
+  return Graph(std::move(pos), faces);
+}
+
+std::vector<int> FacesAcross(const nvv::SurfaceGraph& g, int f, int a, int b) {
+  std::vector<int> out;
+  g.ForEachFaceAcross(f, a, b, [&](int o) { out.push_back(o); });
+  return out;
+}
+
+}  // namespace
+
+TEST(SurfaceGraph, FacesAcrossAnEdgeOneBorderOrSeveral) {
+  // Two triangles on a square: one face across the diagonal, none across the rim.
+  const auto square = Graph({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
+  EXPECT_EQ(std::vector<int>{1}, FacesAcross(square, 0, 2, 0));
+  EXPECT_EQ(std::vector<int>{0}, FacesAcross(square, 1, 0, 2));
+  EXPECT_TRUE(FacesAcross(square, 0, 0, 1).empty());
+  EXPECT_TRUE(square.OnBorder(0));
+  // A book of 5 pages: every other page is across the spine, in face order.
+  const auto book5 = Book(5);
+  EXPECT_EQ((std::vector<int>{0, 1, 3, 4}), FacesAcross(book5, 2, 1, 0));
+  EXPECT_TRUE(book5.OnBorder(2));  // (its other two edges are the book's rim)
+  // A book of more pages than are worth pairing lists one other page only.
+  const auto book = Book(nvv::tuning::kMaxFacesListedPerEdge + 1);
+  EXPECT_EQ(std::vector<int>{0}, FacesAcross(book, 3, 0, 1));
+  EXPECT_EQ(std::vector<int>{1}, FacesAcross(book, 0, 0, 1));
+}
+
+TEST(SurfaceGraph, OrientationAndClosureFromTheEdgesDirections) {
+  const std::vector<Eigen::Vector3d> tet = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const auto out = Graph(tet, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
+  EXPECT_TRUE(out.consistentlyOriented);
+  EXPECT_TRUE(out.closed);
+  EXPECT_NEAR(1.0 / 6.0, out.volume, 1e-15);
+  const auto in = Graph(tet, {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}});
+  EXPECT_TRUE(in.closed);
+  EXPECT_NEAR(-1.0 / 6.0, in.volume, 1e-15);
+  // One face turned: its edges are used twice in one direction.
+  const auto flipped = Graph(tet, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 3, 2}});
+  EXPECT_FALSE(flipped.consistentlyOriented);
+  EXPECT_FALSE(flipped.closed);
+  // An open, consistently oriented strip is not closed.
+  const auto open = Graph(tet, {{0, 2, 1}, {0, 1, 3}});
+  EXPECT_TRUE(open.consistentlyOriented);
+  EXPECT_FALSE(open.closed);
+  // A book whose pages all run 0 -> 1 is inconsistent; alternating pages are not.
+  EXPECT_FALSE(Book(4).consistentlyOriented);
 }
 
 TEST(HugePages, AssignAndReserveKeepTheirValues) {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "surface_graph.h"
+#include "tuning.h"
 
 namespace nvv {
 
@@ -27,8 +28,9 @@ class BallFlood {
   explicit BallFlood(const SurfaceGraph& g) : g_(g), stamp_(g.VertexCount(), 0) {}
 
   // Floods from `source` through vertices within `radius` of it, breadth first, until
-  // `maxVertices` are reached. `blocked(v)` true: v is reached but the flood does not go on
-  // through it (as GeodesicMarch::Run). Returns false when it stopped at maxVertices.
+  // `maxVertices` are reached or their faces reach GeodesicMarch::Run's bound. `blocked(v)`
+  // true: v is reached but the flood does not go on through it (as GeodesicMarch::Run).
+  // Returns false when it stopped at a bound.
   template <class Blocked>
   bool Run(int source, double radius, int maxVertices, Blocked blocked) {
     if (++current_ == 0) {  // the counter wrapped: old stamps could collide
@@ -40,6 +42,9 @@ class BallFlood {
     const double r2 = radius * radius;
     stamp_[source] = current_;
     reached_.push_back(source);
+    // The same bound on the faces of the reached vertices as GeodesicMarch::Run's.
+    const long long maxFaces = (long long)maxVertices * tuning::kMarchFacesPerVertex;
+    long long faces = 0;
     // reached_ is its own queue: entries before `next` have been expanded.
     for (std::size_t next = 0; next < reached_.size(); ++next) {
       const int x = reached_[next];
@@ -50,6 +55,8 @@ class BallFlood {
           stamp_[y] = current_;  // seen: inside or outside, it is tested once
           if ((g_.pos[y] - c).squaredNorm() > r2) continue;
           if (int(reached_.size()) >= maxVertices) return false;
+          faces += g_.FaceEnd(y) - g_.FaceBegin(y);
+          if (faces > maxFaces) return false;
           reached_.push_back(y);
         }
       }

@@ -28,6 +28,7 @@
 
 #include "huge_pages.h"
 #include "surface_graph.h"
+#include "tuning.h"
 
 namespace nvv {
 
@@ -39,10 +40,12 @@ class GeodesicMarch {
  public:
   explicit GeodesicMarch(const SurfaceGraph& g);
 
-  // Marches from `source` until the next vertex would be farther than `radius` or
-  // `maxVertices` vertices are accepted. `blocked(v)` true: v may be accepted (it is reached)
-  // but the front does not expand through it and it never serves as A or B of an update.
-  // Returns false when the march stopped at maxVertices.
+  // Marches from `source` until the next vertex would be farther than `radius`, or
+  // `maxVertices` vertices are accepted, or accepting the next would bring the faces of the
+  // accepted vertices past maxVertices * tuning::kMarchFacesPerVertex (the source's aside): what
+  // the march and its callers' loops over the reached faces cost is bounded either way.
+  // `blocked(v)` true: v may be accepted (it is reached) but the front does not expand through
+  // it and it never serves as A or B of an update. Returns false when it stopped at a bound.
   template <class Blocked>
   bool Run(int source, double radius, int maxVertices, Blocked blocked) {
     Reset();
@@ -52,10 +55,16 @@ class GeodesicMarch {
     state_[source] = kTentative;
     Push({0.0, source});
     bool complete = true;
+    const long long maxFaces = (long long)maxVertices * tuning::kMarchFacesPerVertex;
+    long long faces = 0;
     while (!heap_.empty()) {
       const Entry e = heap_.front();  // the tentative vertex of least (distance, index)
       if (e.d > radius) break;
       if (int(reached_.size()) >= maxVertices) { complete = false; break; }
+      if (e.v != source) {
+        faces += g_.FaceEnd(e.v) - g_.FaceBegin(e.v);
+        if (faces > maxFaces) { complete = false; break; }
+      }
       PopFront();
       state_[e.v] = kAccepted;
       reached_.push_back(e.v);

@@ -64,7 +64,8 @@ Pass1Settings SettingsFor(const SurfaceGraph& g, const Params& p) {
   s.epsilon = EpsilonFromAngle(p.creaseAngleDeg);
   s.eta = EpsilonFromAngle(p.cornerAngleDeg);
   s.signAware = p.classRule == ClassRule::SignAware && g.consistentlyOriented;
-  s.maxNeighbourhood = p.maxNeighbourhood > 0 ? p.maxNeighbourhood : AutoNeighbourhoodCap(s.radius / g.meanEdge);
+  s.maxNeighbourhood = p.maxNeighbourhood > 0 ? p.maxNeighbourhood
+                                              : AutoNeighbourhoodCap(s.radius / g.meanEdge, std::size_t(g.VertexCount()));
   return s;
 }
 
@@ -102,7 +103,8 @@ void Summarise(const SurfaceGraph& g, const Pass1Settings& s, const std::vector<
   }
   if (sum.capped > 0)
     sum.warnings.push_back(std::to_string(sum.capped) + " vertices reached the neighbourhood cap of " +
-                           std::to_string(s.maxNeighbourhood) + " vertices; their neighbourhood was truncated.");
+                           std::to_string(s.maxNeighbourhood) + " vertices; their neighbourhood was truncated "
+                           "(max_neighbourhood raises the cap).");
   if (g.nonFinite > 0)
     sum.warnings.push_back(std::to_string(g.nonFinite) + " vertices have non-finite coordinates and were left out.");
   if (g.unreferenced > 0)

@@ -1,26 +1,44 @@
 #include "params.h"
 
+#include <cstdio>
+
 namespace nvv {
 
+namespace {
+
+std::string Number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
+}  // namespace
+
+// Every range is limits.h's, so these messages quote what the dialog and --help offer.
 std::string ValidateParams(const Params& p) {
   auto bad = [](double x) { return !std::isfinite(x); };
-  if (bad(p.k) || p.k <= 0.0 || p.k > 50.0)
-    return "Neighbourhood size k must be a number in (0, 50] mean edge lengths (got " +
-           std::to_string(p.k) + ").";
-  if (bad(p.absoluteRadius) || p.absoluteRadius < 0.0)
-    return "The absolute radius must be 0 (use k) or a positive number.";
-  if (bad(p.creaseAngleDeg) || p.creaseAngleDeg < 1.0 || p.creaseAngleDeg > 89.0)
-    return "The crease angle must be between 1 and 89 degrees (got " +
-           std::to_string(p.creaseAngleDeg) + ").";
-  if (bad(p.cornerAngleDeg) || p.cornerAngleDeg < 1.0 || p.cornerAngleDeg > 89.0)
-    return "The corner angle must be between 1 and 89 degrees (got " +
-           std::to_string(p.cornerAngleDeg) + ").";
+  if (bad(p.k) || p.k < limits::kMinK || p.k > limits::kMaxK)
+    return "Neighbourhood size k must be between " + Number(limits::kMinK) + " and " + Number(limits::kMaxK) +
+           " mean edge lengths (got " + Number(p.k) + ").";
+  if (bad(p.absoluteRadius) || p.absoluteRadius < 0.0 || p.absoluteRadius > limits::kMaxAbsoluteRadius)
+    return "The absolute radius must be 0 (use k) or a positive number up to " + Number(limits::kMaxAbsoluteRadius) +
+           " (got " + Number(p.absoluteRadius) + ").";
+  if (bad(p.creaseAngleDeg) || p.creaseAngleDeg < limits::kMinAngleDeg || p.creaseAngleDeg > limits::kMaxAngleDeg)
+    return "The crease angle must be between " + Number(limits::kMinAngleDeg) + " and " +
+           Number(limits::kMaxAngleDeg) + " degrees (got " + Number(p.creaseAngleDeg) + ").";
+  if (bad(p.cornerAngleDeg) || p.cornerAngleDeg < limits::kMinAngleDeg || p.cornerAngleDeg > limits::kMaxAngleDeg)
+    return "The corner angle must be between " + Number(limits::kMinAngleDeg) + " and " +
+           Number(limits::kMaxAngleDeg) + " degrees (got " + Number(p.cornerAngleDeg) + ").";
   if (bad(p.sigmaFraction) || p.sigmaFraction < 0.01 || p.sigmaFraction > 100.0)
-    return "The weight fall-off (sigma / radius) must be in [0.01, 100].";
-  if (p.maxNeighbourhood != 0 && (p.maxNeighbourhood < 16 || p.maxNeighbourhood > tuning::kMaxCap))
-    return "The neighbourhood cap must be 0 (automatic) or between 16 and 10,000,000 vertices.";
-  if (p.threads < 0 || p.threads > 4096) return "The thread count must be 0 (all) or positive.";
-  if (p.fitRounds < 1 || p.fitRounds > 4) return "The number of fit rounds must be between 1 and 4.";
+    return "The weight fall-off (sigma / radius) must be between 0.01 and 100 (got " + Number(p.sigmaFraction) + ").";
+  if (p.maxNeighbourhood < 0 || p.maxNeighbourhood > limits::kMaxNeighbourhoodCap)
+    return "The neighbourhood cap must be 0 (automatic) or a number of vertices up to " +
+           std::to_string(limits::kMaxNeighbourhoodCap) + " (got " + std::to_string(p.maxNeighbourhood) + ").";
+  if (p.threads < 0 || p.threads > 4096)
+    return "The thread count must be 0 (all cores) or between 1 and 4096 (got " + std::to_string(p.threads) + ").";
+  if (p.fitRounds < limits::kMinFitRounds || p.fitRounds > limits::kMaxFitRounds)
+    return "The number of fit rounds must be between " + std::to_string(limits::kMinFitRounds) + " and " +
+           std::to_string(limits::kMaxFitRounds) + " (got " + std::to_string(p.fitRounds) + ").";
   const int fit = static_cast<int>(p.fit);
   if (fit < 0 || fit > 2) return "Unknown curvature fit.";
   const int rule = static_cast<int>(p.classRule);

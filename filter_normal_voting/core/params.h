@@ -8,7 +8,9 @@
 #ifndef NVV_CORE_PARAMS_H
 #define NVV_CORE_PARAMS_H
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <string>
 
 #include "tuning.h"
@@ -84,11 +86,15 @@ struct Params {
 
 // A uniform triangulation puts about (2 / sqrt 3) pi k^2 ~ 3.6 k^2 vertices within g_m = k l_ave;
 // the automatic cap allows four times that (regions up to 4x denser than average keep their whole
-// neighbourhood), and never less than 1,024.
-inline int AutoNeighbourhoodCap(double kEffective) {
+// neighbourhood), and never less than 1,024. On a large mesh it allows no more than the mesh's
+// share of tuning::kAutoVisitBudget either: k = 50 on a million vertices would otherwise march
+// 9,000 vertices from each (hours); it marches the nearest 1,024 (effective k about 17) and the
+// summary says how many neighbourhoods were truncated.
+inline int AutoNeighbourhoodCap(double kEffective, std::size_t vertexCount) {
   // An absolute radius far beyond the mesh's edges costs what the largest k costs, not more.
   if (!(kEffective <= tuning::kAutoCapMaxK)) kEffective = tuning::kAutoCapMaxK;  // NaN too
-  const double c = tuning::kAutoCapPerK2 * kEffective * kEffective;
+  double c = tuning::kAutoCapPerK2 * kEffective * kEffective;
+  if (vertexCount > 0) c = std::min(c, tuning::kAutoVisitBudget / double(vertexCount));
   return c > double(tuning::kMaxCap) ? tuning::kMaxCap : (c < double(tuning::kAutoCapMin) ? tuning::kAutoCapMin : int(c));
 }
 

@@ -93,37 +93,59 @@ void SurfaceGraph::Build(std::vector<Eigen::Vector3d>&& positions, std::vector<s
   unreferenced = 0;
   for (int v = 0; v < n; ++v)
     if (usable[v] && !Referenced(v)) ++unreferenced;
-  CheckOrientation(T);
+  BuildEdges();
 }
 
 // A two-face edge used twice in the same direction means the orientation flips there.
-// Edges with three or more faces (non-manifold) say nothing about orientation: skipped.
-// Done on the CSR adjacency instead of a hash map of directed edges: the same answer with no
-// allocation. A face using a -> b holds both a and b, so only the faces of the endpoint with fewer
-// faces are scanned: a 100,000-valence fan vertex costs its neighbours' two faces per edge.
-// A consistently oriented mesh whose every directed edge has its reverse is closed; its signed
-// volume (the divergence theorem, summed in face order) says whether the faces point outward.
-void SurfaceGraph::CheckOrientation(int threads) {
-  // Number of faces that use the directed edge a -> b.
-  auto uses = [this](int a, int b) {
-    const int scan = vfStart[b + 1] - vfStart[b] < vfStart[a + 1] - vfStart[a] ? b : a;  // the endpoint with fewer faces
-    int count = 0;
-    for (int i = vfStart[scan]; i < vfStart[scan + 1]; ++i) {
-      const auto& f = face[vfList[i]];
-      for (int j = 0; j < 3; ++j) count += f[j] == a && f[(j + 1) % 3] == b;
-    }
-    return count;
-  };
-  const int nf = FaceCount();
+// Every face edge is put in a bucket by its lower vertex (a counting sort) and each bucket is
+// sorted by the higher vertex, so the faces on one edge come together in increasing face order:
+// O(F log d) for the largest valence d, whatever the edges' multiplicity (a CSR scan per edge
+// would cost the product of its two ends' valences, quadratic on a non-manifold "book").
+// Orientation: an edge used in one direction only is open; used two or more times in one
+// direction and never in the other, the orientation flips there. A consistently oriented mesh
+// whose every edge is used both ways is closed; its signed volume (the divergence theorem, summed
+// in face order) says whether the faces point outward.
+void SurfaceGraph::BuildEdges() {
+  const int n = VertexCount(), nf = FaceCount();
+  auto from = [this](int fe) { return face[fe / 3][fe % 3]; };
+  auto to = [this](int fe) { return face[fe / 3][fe % 3 == 2 ? 0 : fe % 3 + 1]; };
+  auto lower = [&](int fe) { return std::min(from(fe), to(fe)); };
+  auto higher = [&](int fe) { return std::max(from(fe), to(fe)); };
+  std::vector<int> start(std::size_t(n) + 1, 0);
+  for (int fe = 0; fe < 3 * nf; ++fe) ++start[lower(fe) + 1];
+  for (int v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<int> order(std::size_t(3) * nf), fill(start.begin(), start.end() - 1);
+  for (int fe = 0; fe < 3 * nf; ++fe) order[fill[lower(fe)]++] = fe;
+  AssignOnHugePages(nonManifoldEdges, std::size_t(nf), std::uint8_t(0));
+  edgeGroupKey.clear();
+  edgeGroupStart.assign(1, 0);
+  edgeGroupFaces.clear();
   bool flipped = false, open = false;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : flipped, open)
-  for (int i = 0; i < nf; ++i)
-    for (int j = 0; j < 3 && !flipped; ++j) {
-      const int a = face[i][j], b = face[i][(j + 1) % 3];
-      const int reverse = uses(b, a);
-      flipped = reverse == 0 && uses(a, b) >= 2;
-      open = open || reverse == 0;
+  for (int v = 0; v < n; ++v) {
+    const auto first = order.begin() + start[v], last = order.begin() + start[v + 1];
+    if (last - first > 1)
+      std::sort(first, last, [&](int x, int y) { return higher(x) != higher(y) ? higher(x) < higher(y) : x < y; });
+    for (auto it = first; it != last;) {
+      auto end = it + 1;
+      while (end != last && higher(*end) == higher(*it)) ++end;
+      const int m = int(end - it);
+      int forward = 0;  // uses of v -> higher
+      for (auto e = it; e != end; ++e) forward += from(*e) == v;
+      if (forward == 0 || forward == m) {
+        open = true;
+        flipped = flipped || m >= 2;
+      }
+      if (m > 2) {
+        for (auto e = it; e != end; ++e) {
+          nonManifoldEdges[*e / 3] |= std::uint8_t(1u << (*e % 3));
+          edgeGroupFaces.push_back(*e / 3);
+        }
+        edgeGroupKey.push_back({v, higher(*it)});
+        edgeGroupStart.push_back(int(edgeGroupFaces.size()));
+      }
+      it = end;
     }
+  }
   consistentlyOriented = !flipped;
   closed = consistentlyOriented && !open && nf > 0;
   volume = 0;

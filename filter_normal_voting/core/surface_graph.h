@@ -25,6 +25,7 @@
 
 #include "huge_pages.h"
 #include "threads.h"
+#include "tuning.h"
 
 namespace nvv {
 
@@ -42,6 +43,13 @@ struct SurfaceGraph {
   std::vector<std::array<double, 3>> faceEdge;
   std::vector<int> vfStart;                   // CSR: faces of v are vfList[vfStart[v] .. vfStart[v+1])
   std::vector<int> vfList;
+  // Bit j of nonManifoldEdges[i]: edge j of face i (face[i][j] -> face[i][j+1]) is held by three or
+  // more faces. Those edges, by their sorted vertex pair edgeGroupKey[g], hold the faces
+  // edgeGroupFaces[edgeGroupStart[g] .. edgeGroupStart[g+1]) in increasing order. One byte per
+  // face: ordinary meshes pay nothing else.
+  std::vector<std::uint8_t> nonManifoldEdges;
+  std::vector<std::array<int, 2>> edgeGroupKey;
+  std::vector<int> edgeGroupStart, edgeGroupFaces;
   double meanEdge = 0;                        // l_ave over the edges of usable faces
   double maxArea = 0;                         // A_max of Eq. 8
   bool consistentlyOriented = true;           // every edge shared by two faces is used in opposite directions
@@ -63,17 +71,36 @@ struct SurfaceGraph {
   }
 
   // Calls fn(o) for every face o != f that holds the edge (a, b) of face f: one on a manifold
-  // edge, none on a boundary, several on a non-manifold one. The faces of the endpoint with fewer
-  // faces are scanned (as in CheckOrientation): from a 100,000-valence fan's centre, each spoke
-  // costs the spoke's two faces, not the centre's 100,000.
+  // edge, none on a boundary, several on a non-manifold one, in increasing face order. On an
+  // edge of one or two faces the faces of the endpoint with fewer faces are scanned: from a
+  // 100,000-valence fan's centre, each spoke costs the spoke's two faces, not the centre's
+  // 100,000. An edge of three or more faces lists its group (edgeGroup*); one held by more than
+  // tuning::kMaxFacesListedPerEdge faces (a "book" of a hundred thousand pages in a hostile
+  // file) lists only its first other face, since what the callers ask of it (a dihedral angle,
+  // a border) has no meaning there and listing every pair would cost the square of its faces.
   template <class Fn>
   void ForEachFaceAcross(int f, int a, int b, Fn fn) const {
-    const bool aFewer = FaceEnd(a) - FaceBegin(a) <= FaceEnd(b) - FaceBegin(b);
-    const int scan = aFewer ? a : b, other = aFewer ? b : a;
-    for (int i = FaceBegin(scan); i < FaceEnd(scan); ++i) {
-      const int o = vfList[i];
-      const auto& t = face[o];
-      if (o != f && (t[0] == other || t[1] == other || t[2] == other)) fn(o);
+    const auto& t = face[f];
+    const int j = (t[2] != a && t[2] != b) ? 0 : ((t[0] != a && t[0] != b) ? 1 : 2);
+    if (!((nonManifoldEdges[f] >> j) & 1)) {
+      const bool aFewer = FaceEnd(a) - FaceBegin(a) <= FaceEnd(b) - FaceBegin(b);
+      const int scan = aFewer ? a : b, other = aFewer ? b : a;
+      for (int i = FaceBegin(scan); i < FaceEnd(scan); ++i) {
+        const int o = vfList[i];
+        const auto& u = face[o];
+        if (o != f && (u[0] == other || u[1] == other || u[2] == other)) fn(o);
+      }
+      return;
+    }
+    const std::array<int, 2> key{std::min(a, b), std::max(a, b)};
+    const int g = int(std::lower_bound(edgeGroupKey.begin(), edgeGroupKey.end(), key) - edgeGroupKey.begin());
+    const int begin = edgeGroupStart[g], end = edgeGroupStart[g + 1];
+    const bool listAll = end - begin <= tuning::kMaxFacesListedPerEdge;
+    for (int i = begin; i < end; ++i) {
+      const int o = edgeGroupFaces[i];
+      if (o == f) continue;
+      fn(o);
+      if (!listAll) return;
     }
   }
 
@@ -87,9 +114,10 @@ struct SurfaceGraph {
              const std::vector<std::array<int, 3>>& rawFaces, int threads = 0);
 
  private:
-  // A two-face edge used twice in the same direction means the orientation flips there; sets
-  // consistentlyOriented, closed and volume.
-  void CheckOrientation(int threads);
+  // Groups every face edge with the other faces' edges on the same two vertices, keeps the groups
+  // of three or more (nonManifoldEdges, edgeGroup*) and, from the directions each edge is used
+  // in, sets consistentlyOriented, closed and volume.
+  void BuildEdges();
   static std::size_t RemoveRepeatedFaces(std::vector<std::array<int, 3>>& faces, int n);
 };
 

@@ -6,6 +6,8 @@
 #ifndef NVV_CORE_TUNING_H
 #define NVV_CORE_TUNING_H
 
+#include "limits.h"
+
 namespace nvv {
 namespace tuning {
 
@@ -16,10 +18,25 @@ namespace tuning {
 constexpr double kAutoCapPerK2 = 16.0;
 // ... and never fewer than this (small k on irregular meshes) nor more than kMaxCap.
 constexpr int kAutoCapMin = 1024;
-constexpr int kMaxCap = 10000000;
+constexpr int kMaxCap = limits::kMaxNeighbourhoodCap;
 // The automatic cap grows with k only up to the largest k the parameter table accepts: an
 // absolute radius of 1e30 on a 6,000-vertex part marched the whole mesh from every vertex.
-constexpr double kAutoCapMaxK = 50.0;
+constexpr double kAutoCapMaxK = limits::kMaxK;
+// ... and the automatic cap times the vertex count stays under this many march steps, down to
+// kAutoCapMin per vertex: total time linear in the mesh at any k (about 40 s on two cores at the
+// budget; the benchmarks' meshes and k never reach it).
+constexpr double kAutoVisitBudget = 2.5e8;
+
+// A march or flood may scan this many faces per vertex it may accept (maxNeighbourhood times
+// this, the source's own faces aside): a uniform mesh has 6 per vertex and its balls hold far
+// fewer vertices than the cap, so ordinary neighbourhoods never reach it, while the centre of a
+// 100,000-face fan is no longer scanned from each of its spokes (total work quadratic in the fan;
+// 32 left a 20,000-face fan at 30 s).
+constexpr int kMarchFacesPerVertex = 8;
+// A non-manifold edge held by more faces than this lists only one other face to the callers
+// that pair faces across an edge (SurfaceGraph::ForEachFaceAcross): dihedral angles mean
+// nothing there, and every pair of a 100,000-face "book" edge is 10^10 pairs.
+constexpr int kMaxFacesListedPerEdge = 16;
 
 // --- Degenerate input --------------------------------------------------------------------------
 

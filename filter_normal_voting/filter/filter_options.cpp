@@ -8,25 +8,27 @@ namespace nvv {
 namespace {
 
 // What the algorithm does (params.h), in the dialog's order.
+static_assert(tuning::kAutoVisitBudget == 2.5e8, "max_neighbourhood's help quotes the budget");
+
 std::vector<ParamSpec> AlgorithmParameters() {
   return {
     {"neighbourhood_k", ParamType::Float, "Neighbourhood size k",
      "Radius of the neighbourhood in mean edge lengths (g_m = k * l_ave): the geodesic ball whose triangles "
      "vote, and the ball the curvature is fitted over. Small k (1-2) keeps small features; larger k (3-8) "
      "averages away scanner noise. The absolute radius is written to the log.",
-     3.0, 0.1, 50.0, {}, {}, false},
+     3.0, limits::kMinK, limits::kMaxK, {}, {}, false},
     {"absolute_radius", ParamType::Float, "Absolute radius (0 = use k)",
      "Neighbourhood radius in the mesh's own units. 0 means: use k times the mean edge length.",
-     0.0, 0.0, 1e30, {}, {}, true},
+     0.0, 0.0, limits::kMaxAbsoluteRadius, {}, {}, true},
     {"crease_angle", ParamType::Float, "Crease angle (deg)",
      "Smallest angle between the normals of two surface sheets that still counts as a crease "
      "(the paper's epsilon = 1/tan^2(angle/2) - 1; 60 deg gives epsilon = 2). Raise it to ignore "
      "shallow edges, lower it to catch them. Between 1 and 89 degrees.",
-     60.0, 1.0, 89.0, {}, {}, false},
+     60.0, limits::kMinAngleDeg, limits::kMaxAngleDeg, {}, {}, false},
     {"corner_angle", ParamType::Float, "Corner angle (deg)",
      "The same threshold for the third direction: how strongly a third sheet must show before a "
      "vertex is a corner (the paper's eta). Between 1 and 89 degrees.",
-     60.0, 1.0, 89.0, {}, {}, false},
+     60.0, limits::kMinAngleDeg, limits::kMaxAngleDeg, {}, {}, false},
     {"stop_at_creases", ParamType::Bool, "Stop curvature at creases",
      "When estimating curvature, do not let a neighbourhood grow across crease and corner vertices, "
      "so each side of an edge keeps its own curvature. Matters most for the Taubin and Euler estimators: "
@@ -49,7 +51,7 @@ std::vector<ParamSpec> AlgorithmParameters() {
      "Crease-aware quadric fit only: how many times to fit. 1 fits the voted normals once; 2 (default) "
      "fits again with the first fit's normals, which halves the direction and curvature error on noisy "
      "smooth surfaces for about 50 % more time; 3-4 rarely add more.",
-     2.0, 1, 4, {}, {}, true},
+     2.0, limits::kMinFitRounds, limits::kMaxFitRounds, {}, {}, true},
     {"cubic_fit", ParamType::Bool, "Cubic where significant",
      "Crease-aware quadric fit only: where a neighbourhood reaches no crease and the mesh's border is "
      "not within half its radius, fit a cubic patch instead when its extra terms are statistically "
@@ -87,7 +89,7 @@ std::vector<ParamSpec> OutputParameters() {
     {"color_clamp_percentile", ParamType::Float, "Ramp clamp percentile",
      "The quality ramp spans the p-th to the (100-p)-th percentile, so a few extreme values do not "
      "wash out the rest.",
-     2.0, 0.0, 49.0, {}, {}, true},
+     2.0, 0.0, limits::kMaxClampPercentile, {}, {}, true},
     {"selection", ParamType::Enum, "Select vertices",
      "Which vertices to select afterwards (replacing the current vertex selection), e.g. to protect "
      "creases from a following smoothing filter.",
@@ -96,8 +98,9 @@ std::vector<ParamSpec> OutputParameters() {
     {"max_neighbourhood", ParamType::Int, "Neighbourhood cap (vertices)",
      "Upper bound on the vertices one neighbourhood may hold; bounds the time spent on very high "
      "valence vertices or absurd radii. 0 = automatic: four times what a uniform mesh holds within "
-     "the radius, at least 1024. Vertices that hit it are counted in the log.",
-     0.0, 0, 10000000, {}, {}, true},
+     "the radius, at least 1024, and on a large mesh at a large k no more than keeps the whole run "
+     "within 250 million neighbourhood steps. Vertices that hit it are counted in the log.",
+     0.0, 0, limits::kMaxNeighbourhoodCap, {}, {}, true},
   };
 }
 

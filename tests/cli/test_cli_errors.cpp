@@ -87,7 +87,7 @@ TEST_F(CliErrors, BadArgumentsAre2) {
   ExpectFailure(2, {"--absolute_radius", "inf", good_, Out()});
   ExpectFailure(2, {"--neighbourhood_k", "3 ", good_, Out()});
   ExpectFailure(2, {"--max_neighbourhood", "3.5", good_, Out()});
-  ExpectFailure(2, {"--max_neighbourhood", "8", good_, Out()});
+  ExpectFailure(2, {"--max_neighbourhood", "10000001", good_, Out()}, "10000000");  // the range --help gives
   ExpectFailure(2, {"--quality", "colourful", good_, Out()}, "shape_index");
   ExpectFailure(2, {"--quality", "10", good_, Out()});
   ExpectFailure(2, {"--stop_at_creases", "maybe", good_, Out()});
@@ -159,4 +159,23 @@ TEST_F(CliErrors, FiniteVerticesGetFiniteValuesAtAnyScaleAndBesideNaN) {
       std::remove(Out().c_str());
     }
   }
+}
+
+// A file listing one point 100,000 times, each copy making a triangle with the same edge (a
+// "book" whose spine every face shares): quadratic in the copies once (16 GB, then "out of
+// memory"); now every vertex is classified, in time and memory linear in the file.
+TEST_F(CliErrors, OnePointListedAHundredThousandTimesRunsToTheEnd) {
+  const int copies = 100000;
+  std::string ply = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(copies + 2) +
+                    "\nproperty float x\nproperty float y\nproperty float z\nelement face " + std::to_string(copies) +
+                    "\nproperty list uchar int vertex_indices\nend_header\n1 0 0\n0 1 0\n";
+  for (int i = 0; i < copies; ++i) ply += "0 0 0\n";
+  for (int i = 0; i < copies; ++i) ply += "3 " + std::to_string(i + 2) + " 0 1\n";
+  const CliResult r = RunCli({Write("book.ply", ply), Out()}, dir_);
+  ASSERT_EQ(0, r.exitCode) << r.err;
+  std::array<std::size_t, 4> counts{};
+  ASSERT_TRUE(PrintedCounts(r.out, counts)) << r.out;
+  EXPECT_EQ(std::size_t(copies + 2), counts[0] + counts[1] + counts[2]) << r.out;  // none unclassified
+  EXPECT_EQ(0u, counts[3]) << r.out;
+  EXPECT_NE(std::string::npos, r.out.find("neighbourhood cap")) << r.out;
 }
