@@ -82,8 +82,9 @@ part "main tests"
 source scripts/sanitizer-env.sh
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)" 2>&1 | tee "$logs/main.ctest.log"
 
-# A few minutes of coverage-guided fuzzing of the core and of each mesh reader (clang's
-# libFuzzer), from the committed seeds; any finding fails the run (it lands in fuzz/findings/).
+# A few minutes of coverage-guided fuzzing of the core, of each mesh reader and of the whole
+# command-line path (clang's libFuzzer), from the committed seeds; any finding fails the run (it
+# lands in fuzz/findings/).
 if [ "${NVV_FUZZ_SECONDS:-30}" != 0 ]; then
   part "fuzzing, ${NVV_FUZZ_SECONDS:-30} s per target"
   bash scripts/fuzz.sh "${NVV_FUZZ_SECONDS:-30}" > "$logs/fuzz.txt" 2>&1 ||
