@@ -8,7 +8,8 @@ MESH_DIR holds what `nvv_bench_accuracy export MESH_DIR` writes: the meshes of t
 "variants" sections (same shapes, seeds and noise) as binary PLY with the truth and this filter's
 default estimates at k = 3 and 5 as vertex properties, listed in meshes.csv. OUT_CSV gets one
 row per section, shape, noise level and estimator (the columns of smooth_grids.csv, with
-"section" first); OUT_CSV without .csv + "_versions.txt" the packages' versions.
+"section" first); OUT_CSV without .csv + "_versions.txt" the packages' versions, the estimators
+whose curvature sign was flipped and PyMeshLab's default scale on each shape in l_ave.
 
 The metrics are bench/smooth.cpp's MeasureOne, over the scored vertices of the three seeds:
   normal     angle between the estimated and the true normal, in degrees, either orientation
@@ -119,8 +120,9 @@ def pymeshlab_curvature(method, scale_k=None):
         if scale_k is not None:
             args["scale"] = pymeshlab.PureValue(scale_k * mesh["lave"])
         out = {}
-        # The filter writes K1 (curvature along direction 1) or K2 as the vertex quality.
-        for which, cc in (("k1", "Max Curvature"), ("k2", "Min Curvature")):
+        # The filter writes K1 (the curvature along direction 1) or K2 as the vertex quality:
+        # vcglib's VertexFromMinCurvatureDir writes K1, VertexFromMaxCurvatureDir K2.
+        for which, cc in (("k1", "Min Curvature"), ("k2", "Max Curvature")):
             with quiet_stdout():
                 ms.compute_curvature_principal_directions_per_vertex(curvcolormethod=cc, **args)
             m = ms.current_mesh()
@@ -302,6 +304,13 @@ def main():
             s = est["k1"] + est["k2"]
             e.sign = -1.0 if s[scored & np.isfinite(s)].sum() < 0 else 1.0
 
+    # PyMeshLab's default scale (PCA, Scale Dependent Quadric Fitting) is 10 % of the bounding
+    # box diagonal: in l_ave on each clean shape, for the page.
+    scales = []
+    for r in listing:
+        if r["noise"] == "0" and r["seed"] == "1":
+            m = load(r)
+            scales.append((r["section"], r["shape"], 0.1 * np.linalg.norm(m["V"].max(0) - m["V"].min(0)) / m["lave"]))
     groups = {}
     for r in listing:
         groups.setdefault((r["section"], r["shape"], r["noise"]), []).append(r)
@@ -347,6 +356,8 @@ def main():
         for e in ests:
             if e.sign < 0:
                 f.write("flipped %s\n" % e.name)
+        for section, shape, x in scales:
+            f.write("default_scale %s|%s|%.6g\n" % (section, shape, x))
     for e in sorted(ests, key=lambda e: -e.seconds):
         print("  %6.1f s  %s" % (e.seconds, e.name))
 
