@@ -5,6 +5,8 @@
 //   f1        crease precision / recall / F1 on roofs, a cube, a capped cylinder (creases.cpp)
 //   near      accuracy of surface vertices near those creases (creases.cpp)
 //   real      fandisk and the ABC model with ground-truth features (real_meshes.cpp)
+//   export    writes the meshes of grids and variants as PLY with the truth and this project's
+//             estimates, for bench/python_peers.py (smooth.cpp)
 // Prints markdown tables; writes CSV files for the plots into OUTDIR.
 #include <cstdio>
 #include <string>
@@ -13,13 +15,14 @@
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: %s grids|variants|f1|near|real OUTDIR\n", argv[0]);
+    std::fprintf(stderr, "usage: %s grids|variants|f1|near|real|export OUTDIR\n", argv[0]);
     return 2;
   }
   const std::string s = argv[1], out = argv[2];
   if (s == "grids" || s == "variants") return nvv_bench::RunSmooth(out, s);
   if (s == "f1" || s == "near") return nvv_bench::RunCreases(out, s);
   if (s == "real") return nvv_bench::RunReal(out);
+  if (s == "export") return nvv_bench::ExportSmooth(out);
   std::fprintf(stderr, "unknown section %s\n", s.c_str());
   return 2;
 }

@@ -12,8 +12,9 @@ Placeholders in the template:
   {{NAME}}                          a generated table or count (see `subst` at the end)
   {{v:FILE|KEY1|KEY2|KEY3|COLUMN}}  one value of one row of a CSV file: FILE is smooth_grids,
                                     smooth_variants or creases_near (keys: shape, noise, estimator),
-                                    creases_f1 (shape, noise, method) or real_f1 (mesh, noise,
-                                    method); COLUMN a column of that file. Printed as in the tables.
+                                    creases_f1 (shape, noise, method), real_f1 (mesh, noise,
+                                    method) or python_peers (section, shape, noise, estimator: four
+                                    keys); COLUMN a column of that file. Printed as in the tables.
 Claims the prose makes about the numbers are checked by `claim()`: a claim the data no longer
 supports stops the script with the claim's text, so the page cannot silently go stale.
 """
@@ -22,7 +23,7 @@ import math
 import os
 import re
 import sys
-from collections import defaultdict
+from collections import Counter, defaultdict
 
 import matplotlib
 
@@ -83,11 +84,13 @@ variants = rows("smooth_variants.csv")
 near = rows("creases_near.csv")
 f1 = rows("creases_f1.csv")
 real = rows("real_f1.csv")
+py = rows("python_peers.csv")
 TABLES = {"smooth_grids": (grids, ("shape", "noise", "estimator")),
           "smooth_variants": (variants, ("shape", "noise", "estimator")),
           "creases_near": (near, ("shape", "noise", "estimator")),
           "creases_f1": (f1, ("shape", "noise", "method")),
-          "real_f1": (real, ("mesh", "noise", "method"))}
+          "real_f1": (real, ("mesh", "noise", "method")),
+          "python_peers": (py, ("section", "shape", "noise", "estimator"))}
 INDEX = {name: {tuple(r[k] for k in keys): r for r in data} for name, (data, keys) in TABLES.items()}
 
 
@@ -107,7 +110,8 @@ def claim(ok, text):
 
 
 # ---- the full tables, as CSV files beside the page
-for name in ("smooth_grids.csv", "smooth_variants.csv", "creases_near.csv", "creases_f1.csv", "real_f1.csv"):
+for name in ("smooth_grids.csv", "smooth_variants.csv", "creases_near.csv", "creases_f1.csv", "real_f1.csv",
+             "python_peers.csv"):
     if os.path.exists(os.path.join(res, name)):
         header, body = read_table(name)
         with open(os.path.join(csv_dir, name), "w", newline="") as f:
@@ -326,6 +330,193 @@ clean_normal_max = max(fnum(r["normal_p90"]) for r in grids if r["noise"] == "0"
 claim(val("creases_f1", "roof 175°", "10", "NVV k=3", "recall") < 1 and
       val("creases_f1", "roof 175°", "10", "NVV k=3", "precision") == 1, "knife edge: misses a few, adds none")
 
+# ---- the Python libraries' estimators (bench/python_peers.py) on the meshes of the smooth sections
+py_text = {}
+if py:
+    # The script's scoring of the default's exported estimates against the C++ tables.
+    cols = ["normal_med", "normal_p90", "normal_mean", "dir_med", "dir_p90", "dir_mean", "curv_med", "curv_p90",
+            "curv_mean"]
+    py_same = py_close = 0
+    for r in py:
+        if r["kind"] != "0":
+            continue
+        c = INDEX["smooth_" + r["section"]].get((r["shape"], r["noise"], r["estimator"]))
+        claim(c is not None, "the Python scoring covers the default's rows of smooth_%s.csv" % r["section"])
+        for col in cols:
+            a, b = fnum(r[col]), fnum(c[col])
+            if r[col] == c[col] or (math.isnan(a) and math.isnan(b)):
+                py_same += 1
+                continue
+            py_close += 1
+            claim(abs(a - b) <= 1e-4 * abs(b) and fmt(a) == fmt(b) and col.startswith("normal") and b < 0.001,
+                  "the Python scoring of the default's estimates gives the C++ tables' numbers, the few that differ "
+                  "in the sixth digit being normal angles below 0.001°")
+    claim(py_same + py_close == len(cols) * sum(r["estimator"] in ("NVV quadric (default) k=3", "NVV quadric (default) k=5")
+                                                for r in grids + variants),
+          "the Python scoring was checked on every row of the default at k = 3 and 5")
+
+    def family(name):
+        return re.sub(r"r=\d+ l_ave", "r=k l_ave", name)
+
+    # Every comparison of the default (k = 3 and 5) with every peer at the same radius (kind 2)
+    # or with its own neighbourhood (kind 3), median and p90 of each metric.
+    by = defaultdict(list)
+    for r in py:
+        by[(r["section"], r["shape"], r["noise"])].append(r)
+    standing = defaultdict(lambda: {"won": 0, "total": 0, "lost_noisy": 0, "ratio": defaultdict(list)})
+    py_lost = defaultdict(lambda: defaultdict(list))  # peer -> shape -> (noise, k, metric, ratio)
+    with open(os.path.join(csv_dir, "python_peers_vs_default.csv"), "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["section", "shape", "noise", "k", "peer", "metric", "statistic", "default", "peer_value",
+                    "ratio_peer_to_default", "default_at_least_as_good"])
+        for (section, shape, noise), rs in by.items():
+            for k in ("3", "5"):
+                ours = [r for r in rs if r["kind"] == "0" and r["k"] == k]
+                for p in (r for r in rs if (r["kind"] == "2" and r["k"] == k) or r["kind"] == "3"):
+                    for m, label in METRICS:
+                        for st in ("med", "p90"):
+                            ov, pv = fnum(ours[0][m + "_" + st]), fnum(p[m + "_" + st])
+                            if not (math.isfinite(ov) and math.isfinite(pv)):
+                                continue
+                            ok = ov <= pv + 0.005  # as default_vs_peers.csv: below 0.005 is a tie
+                            ratio = pv / ov if ov > 0 else float("nan")
+                            sd = standing[family(p["estimator"])]
+                            sd["total"] += 1
+                            sd["won"] += ok
+                            if float(noise) > 0:
+                                sd["lost_noisy"] += not ok
+                                if not ok:
+                                    py_lost[family(p["estimator"])][shape].append((noise, k, label, ov / pv))
+                                if st == "med" and math.isfinite(ratio):
+                                    sd["ratio"][m].append(ratio)
+                            w.writerow([section, shape, noise, k, p["estimator"], label,
+                                        "median" if st == "med" else "p90", ours[0][m + "_" + st], p[m + "_" + st],
+                                        "%.4g" % ratio, "yes" if ok else "no"])
+
+    def ratio_cell(v):
+        if not v:
+            return "–"
+        x = float(np.median(v))
+        return ("%.0f" % x if x >= 100 else "%.1f" % x if x >= 10 else "%.2f" % x) + "×"
+
+    pi2 = {(r["section"], r["shape"], r["noise"], r["estimator"]): r for r in py}
+    py_fams = list(dict.fromkeys(family(r["estimator"]) for r in py if r["kind"] != "0"))
+    stand_lines = []
+    for fam in py_fams:
+        sd = standing[fam]
+        stand_lines.append([fam, "%d of %d" % (sd["won"], sd["total"]), str(sd["lost_noisy"])] +
+                           [ratio_cell(sd["ratio"][m]) for m, _ in METRICS])
+    py_text["HEAD_PY_STANDING"] = table(
+        ["peer", "default as good or better", "default worse, noisy meshes", "median ratio peer / default, noisy: normal",
+         "direction", "curvature"], stand_lines)
+    py_text["PY_WON"] = str(sum(standing[f]["won"] for f in py_fams))
+    py_text["PY_TOTAL"] = str(sum(standing[f]["total"] for f in py_fams))
+    py_text["PY_LOST_NOISY"] = str(sum(standing[f]["lost_noisy"] for f in py_fams))
+    def and_list(xs):
+        xs = list(xs)
+        return " and ".join(xs) if len(xs) < 3 else ", ".join(xs[:-1]) + " and " + xs[-1]
+
+    lost_parts = []
+    for peer, shapes in py_lost.items():
+        for shape, items in shapes.items():
+            lost_parts.append("%s on the %s at %s %% noise (%s at k = %s; the default's error up to %s× the peer's)" % (
+                peer, shape, and_list(sorted({i[0] for i in items}, key=float)),
+                and_list(dict.fromkeys(i[2] for i in items)), and_list(sorted({i[1] for i in items})),
+                "%.1f" % max(i[3] for i in items)))
+    py_text["PY_LOST"] = "; ".join(lost_parts) or "none"
+    lost_peers = list(py_lost)
+    py_text["PY_SAME"], py_text["PY_CLOSE"] = str(py_same), str(py_close)
+
+    # PyMeshLab (MeshLab 2025.07) against MeshLab 2020.09's vcglib (the C++ tables), printed cells.
+    pairs = {"pymeshlab Taubin approximation": "MeshLab Taubin one-ring", "pymeshlab Normal Cycles": "MeshLab Normal Cycles",
+             "pymeshlab Quadric Fitting": "MeshLab Quadric Fitting"}
+    ml_same = ml_cells = 0
+    ml_differ = []
+    for r in py:
+        if r["estimator"] not in pairs:
+            continue
+        c = INDEX["smooth_" + r["section"]][(r["shape"], r["noise"], pairs[r["estimator"]])]
+        for m, label in METRICS:
+            for st in ("med", "p90"):
+                if math.isfinite(fnum(c[m + "_" + st])):
+                    ml_cells += 1
+                    if fmt(fnum(r[m + "_" + st])) == fmt(fnum(c[m + "_" + st])):
+                        ml_same += 1
+                    else:
+                        ml_differ.append((r["estimator"], label))
+    py_text["PY_ML_SAME"], py_text["PY_ML_CELLS"] = str(ml_same), str(ml_cells)
+    py_text["PY_ML_DIFFER"] = ", ".join("%s: %d %s cell%s" % (e, n, l, "" if n == 1 else "s") for (e, l), n in
+                                        sorted(Counter(ml_differ).items())) or "none"
+    # libigl's ball fit and PyMeshLab's Scale Dependent Quadric Fitting at the same radius.
+    same_fit = [fmt(fnum(r[c])) == fmt(fnum(pi2[(r["section"], r["shape"], r["noise"],
+                                                 r["estimator"].replace("pymeshlab Scale Dependent QF",
+                                                                        "libigl principal_curvature"))][c]))
+                for r in py if r["estimator"].startswith("pymeshlab Scale Dependent QF r=")
+                for c in ("curv_med", "curv_p90")]
+    py_text["PY_FIT_SAME"], py_text["PY_FIT_CELLS"] = str(sum(same_fit)), str(len(same_fit))
+    py_text["PY_VALUES"] = str(py_same + py_close)
+
+    # 5 % noise, k = 3: the default and every peer at k = 3 or with its own neighbourhood.
+    pi = {(r["section"], r["shape"], r["noise"], r["estimator"]): r for r in py}
+    py_lines = []
+    for r in py:
+        if (r["section"], r["shape"], r["noise"]) != ("grids", "sphere", "5") or r["k"] not in ("3", "0"):
+            continue
+        e = r["estimator"]
+        c, t = pi[("grids", "cylinder", "5", e)], pi[("variants", "torus a=24 b=8", "5", e)]
+        py_lines.append([e, mp(r, "normal"), mp(c, "dir"), mp(r, "curv"), mp(t, "curv")])
+    py_text["HEAD_PY"] = table(["estimator, 5 % noise", "sphere normal (°)", "cylinder min. direction (°)",
+                                "sphere curvature (%)", "torus curvature (%)"], py_lines)
+    vers = dict(l.split(" ", 1) for l in open(os.path.join(res, "python_peers_versions.txt")).read().splitlines())
+    py_text["PY_VERSIONS"] = ", ".join("%s %s" % (p, vers[p]) for p in ("pymeshlab", "libigl", "trimesh", "open3d-cpu",
+                                                                           "rtree", "numpy", "scipy", "python"))
+    py_text["PY_FLIPPED"] = ", ".join(l[len("flipped "):] for l in open(os.path.join(res, "python_peers_versions.txt"))
+                                      .read().splitlines() if l.startswith("flipped ")) or "none"
+    scale = {tuple(v.rsplit("|", 1)[0].split("|")): float(v.rsplit("|", 1)[1]) for k, v in
+             (l.split(" ", 1) for l in open(os.path.join(res, "python_peers_versions.txt")).read().splitlines())
+             if k == "default_scale"}
+    py_text["PY_SCALE_GRIDS"] = "%.1f" % scale[("grids", "sphere")]
+    py_text["PY_SCALE_SPHERE64"] = "%.1f" % scale[("variants", "sphere 64x64 (0.5 mm)")]
+    py_text["PY_SCALE_TORUS"] = "%.1f" % scale[("variants", "torus a=24 b=8")]
+    # Claims of the section's prose.
+    claim(set(lost_peers) <= {"pymeshlab Scale Dependent QF (default scale)", "pymeshlab point-cloud normals, ball of r=k l_ave"}
+          and set(py_lost["pymeshlab Scale Dependent QF (default scale)"]) <= {"sphere 64x64 (0.5 mm)", "torus a=24 b=8"}
+          and min(scale[("variants", "sphere 64x64 (0.5 mm)")], scale[("variants", "torus a=24 b=8")]) > 5,
+          "on noisy meshes the default loses only to Scale Dependent Quadric Fitting at its default scale, a ball "
+          "larger than k = 5 on the 64 x 64 sphere and the torus, and to the point-cloud normals")
+    claim(all(i[3] < 1.2 for items in py_lost.get("pymeshlab point-cloud normals, ball of r=k l_ave", {}).values()
+              for i in items), "the point-cloud normals win by little")
+    claim(ml_same >= ml_cells - 2, "PyMeshLab gives MeshLab 2020.09's numbers")
+    for shape in ("sphere", "cylinder"):
+        for n in ("1", "2", "5", "10", "20"):
+            ours = val("python_peers", "grids", shape, n, "NVV quadric (default) k=3", "normal_med")
+            for e in ("trimesh vertex normals", "pymeshlab Taubin approximation"):
+                claim(fmt(val("python_peers", "grids", shape, n, e, "normal_med")) ==
+                      fmt(val("smooth_grids", shape, n, "MeshLab Taubin one-ring", "normal_med")),
+                      "the libraries' mesh normals are MeshLab's angle-weighted one-ring normals")
+            best = min(fnum(r["normal_med"]) for r in py if r["kind"] != "0" and r["section"] == "grids" and
+                       r["shape"] == shape and r["noise"] == n and r["k"] in ("0", "3"))
+            claim(ours < best, "on the noisy grids at k = 3, the default's normal has the smallest median")
+    for n in ("1", "2", "5", "10", "20"):
+        best = min(fnum(r["dir_med"]) for r in py if r["kind"] != "0" and r["section"] == "grids" and
+                   r["shape"] == "cylinder" and r["noise"] == n and r["k"] in ("0", "3"))
+        claim(val("python_peers", "grids", "cylinder", n, "NVV quadric (default) k=3", "dir_med") < best,
+              "on the noisy cylinder at k = 3, the default's direction has the smallest median")
+    for shape in ("sphere", "cylinder"):
+        for n in ("1", "2", "5", "10", "20"):
+            best = min(fnum(r["curv_med"]) for r in py if r["kind"] != "0" and r["section"] == "grids" and
+                       r["shape"] == shape and r["noise"] == n and r["k"] in ("0", "3"))
+            claim(val("python_peers", "grids", shape, n, "NVV quadric (default) k=3", "curv_med") < best,
+                  "on the noisy grids at k = 3, the default's curvature has the smallest median")
+    claim(fmt(min(fnum(r["curv_med"]) for r in py if r["kind"] == "2" and r["k"] == "3" and r["section"] == "grids"
+                  and r["shape"] == "sphere" and r["noise"] == "5"))
+          == fmt(val("python_peers", "grids", "sphere", "5", "libigl principal_curvature r=3 l_ave", "curv_med")),
+          "the best curvature at the same radius is libigl's ball fit")
+    claim(val("python_peers", "grids", "cylinder", "0", "pymeshlab Quadric Fitting", "dir_med") > 80,
+          "PyMeshLab's Quadric Fitting keeps MeshLab's swapped directions")
+    py_seconds = os.path.join(res, "python_seconds.txt")
+    py_text["PY_SECONDS"] = open(py_seconds).read().strip() if os.path.exists(py_seconds) else "–"
+
 # ---- plots
 plt.rcParams.update({"font.size": 8})
 sel = {"3": ["NVV quadric (default) k=3", "NVV paper Taubin k=3", "NVV Euler LSQ k=3", "CGAL jet r=3 l_ave",
@@ -535,6 +726,7 @@ subst = {
     "F1_FAIL": "; ".join(f1_fail) if f1_fail else "none",
     "FLIPPED": ", ".join(flipped) if flipped else "none",
 }
+subst.update(py_text)
 for k, v in subst.items():
     text = text.replace("{{" + k + "}}", v)
 quoted = []

@@ -6,6 +6,7 @@
 
 namespace nvv_bench {
 int RunSmooth(const std::string& outDir, const std::string& which);  // "grids" or "variants"
+int ExportSmooth(const std::string& outDir);  // their meshes as PLY, for bench/python_peers.py
 int RunCreases(const std::string& outDir, const std::string& which); // "f1" or "near"
 int RunReal(const std::string& outDir);
 }  // namespace nvv_bench

@@ -85,15 +85,21 @@ struct Errors {
   std::vector<double> normal, dir, curv;
 };
 
+// The clean mesh of one seed (where the truth is evaluated) and its noisy copy (what the
+// estimators see).
+void BuildNoisy(const ShapeSet& s, double noise, unsigned seed, TMesh& clean, TMesh& m) {
+  Build(s, seed, clean);
+  Build(s, seed, m);
+  const double sigma = noise * nvv_shapes::MeanEdge(m);
+  const unsigned noiseSeed = 1000 * seed + unsigned(noise * 1000);
+  if (s.paperGrid) nvv_shapes::AddNoise(m, sigma, noiseSeed, nvv_shapes::AlongZ);
+  else NoiseAlongNormals(m, sigma, noiseSeed);
+}
+
 void MeasureOne(const ShapeSet& s, double noise, Estimator& est, Errors& acc, std::vector<Estimate>* keep = nullptr) {
   for (unsigned seed = 1; seed <= 3; ++seed) {
     TMesh clean, m;
-    Build(s, seed, clean);
-    Build(s, seed, m);
-    const double sigma = noise * nvv_shapes::MeanEdge(m);
-    const unsigned noiseSeed = 1000 * seed + unsigned(noise * 1000);
-    if (s.paperGrid) nvv_shapes::AddNoise(m, sigma, noiseSeed, nvv_shapes::AlongZ);
-    else NoiseAlongNormals(m, sigma, noiseSeed);
+    BuildNoisy(s, noise, seed, clean, m);
     Context c(m);
     std::vector<Estimate> e;
     est.fn(c, e);
@@ -108,6 +114,26 @@ void MeasureOne(const ShapeSet& s, double noise, Estimator& est, Errors& acc, st
     }
     if (keep && seed == 1) *keep = e;
   }
+}
+
+// The shapes and noise levels of the "grids" and "variants" sections (RunSmooth measures them,
+// ExportSmooth writes them out for bench/python_peers.py).
+std::vector<ShapeSet> SmoothSets(bool paper) {
+  if (paper)
+    return {
+        {"plane", ShapeSet::Plane, 32, 0, true},
+        {"sphere", ShapeSet::Sphere, 32, 0, true},
+        {"cylinder", ShapeSet::Cylinder, 32, 0, true},
+    };
+  return {
+      {"sphere irregular", ShapeSet::Sphere, 32, 0.6, true},
+      {"cylinder irregular", ShapeSet::Cylinder, 32, 0.6, true},
+      {"sphere 64x64 (0.5 mm)", ShapeSet::Sphere, 63, 0, true},
+      {"torus a=24 b=8", ShapeSet::Torus, 0, 0, false},
+  };
+}
+std::vector<double> SmoothNoises(bool paper) {
+  return paper ? std::vector<double>{0, 0.01, 0.02, 0.05, 0.10, 0.20} : std::vector<double>{0, 0.05, 0.20};
 }
 
 }  // namespace
@@ -154,21 +180,9 @@ std::vector<Estimator> SmoothEstimators(bool torus) {
 }
 
 int RunSmooth(const std::string& outDir, const std::string& which) {
-  const std::vector<ShapeSet> grids = {
-      {"plane", ShapeSet::Plane, 32, 0, true},
-      {"sphere", ShapeSet::Sphere, 32, 0, true},
-      {"cylinder", ShapeSet::Cylinder, 32, 0, true},
-  };
-  const std::vector<ShapeSet> variants = {
-      {"sphere irregular", ShapeSet::Sphere, 32, 0.6, true},
-      {"cylinder irregular", ShapeSet::Cylinder, 32, 0.6, true},
-      {"sphere 64x64 (0.5 mm)", ShapeSet::Sphere, 63, 0, true},
-      {"torus a=24 b=8", ShapeSet::Torus, 0, 0, false},
-  };
   const bool paper = which == "grids";
-  const std::vector<ShapeSet>& sets = paper ? grids : variants;
-  const std::vector<double> noises = paper ? std::vector<double>{0, 0.01, 0.02, 0.05, 0.10, 0.20}
-                                           : std::vector<double>{0, 0.05, 0.20};
+  const std::vector<ShapeSet> sets = SmoothSets(paper);
+  const std::vector<double> noises = SmoothNoises(paper);
   std::vector<Estimator> ests = SmoothEstimators(!paper);
   CalibrateSigns(ests);
   std::printf("<!-- curvature signs calibrated on the clean sphere:");
@@ -200,6 +214,88 @@ int RunSmooth(const std::string& outDir, const std::string& which) {
       }
     std::fflush(stdout);
   }
+  return 0;
+}
+
+// Writes every mesh the "grids" and "variants" sections score (same shapes, seeds and noise) as
+// binary PLY into outDir, with the truth and this project's default estimates at k = 3 and 5 as
+// vertex properties, and lists them in outDir/meshes.csv. bench/python_peers.py runs the Python
+// libraries' estimators on these files and scores everyone with the metrics of MeasureOne.
+// Per vertex (double unless noted): x y z, the noisy position; true_n{x,y,z}, true_t2{x,y,z}
+// (direction of the smaller curvature, zero where undefined), true_k1, true_k2; scored and
+// has_dir (uchar); nvv{3,5}_n{x,y,z}, nvv{3,5}_t2{x,y,z}, nvv{3,5}_k1, nvv{3,5}_k2.
+// Header comments: l_ave (as the core computes it), curvature_scale (R or the tube radius).
+int ExportSmooth(const std::string& outDir) {
+  std::vector<Estimator> ests = {Nvv(3, nvv::CurvatureFit::SheetQuadric), Nvv(5, nvv::CurvatureFit::SheetQuadric)};
+  CalibrateSigns(ests);
+  Csv list(outDir, "meshes.csv", "section,shape,noise,seed,file,vertices,curvature_scale");
+  int count = 0;
+  for (const char* section : {"grids", "variants"}) {
+    const bool paper = std::string(section) == "grids";
+    for (const ShapeSet& s : SmoothSets(paper))
+      for (double noise : SmoothNoises(paper))
+        for (unsigned seed = 1; seed <= 3; ++seed) {
+          TMesh clean, m;
+          BuildNoisy(s, noise, seed, clean, m);
+          Context c(m);
+          std::vector<std::vector<Estimate>> e(ests.size());
+          for (std::size_t j = 0; j < ests.size(); ++j) {
+            ests[j].fn(c, e[j]);
+            ApplySign(ests[j].sign, e[j]);
+          }
+          char file[64];
+          std::snprintf(file, sizeof file, "%s_%02d_%03g_%u.ply", section, ++count, noise * 100, seed);
+          FILE* f = std::fopen((outDir + "/" + file).c_str(), "wb");
+          if (!f) {
+            std::fprintf(stderr, "cannot write %s/%s\n", outDir.c_str(), file);
+            return 2;
+          }
+          std::fprintf(f, "ply\nformat binary_little_endian 1.0\n");
+          std::fprintf(f, "comment shape %s\ncomment noise %g\ncomment seed %u\n", s.name, noise * 100, seed);
+          std::fprintf(f, "comment l_ave %.17g\ncomment curvature_scale %.17g\n", c.lave, CurvScale(s));
+          std::fprintf(f, "element vertex %zu\n", m.vert.size());
+          const char* axes[] = {"x", "y", "z"};
+          for (const char* a : axes) std::fprintf(f, "property double %s\n", a);
+          for (const char* v : {"true_n", "true_t2"})
+            for (const char* a : axes) std::fprintf(f, "property double %s%s\n", v, a);
+          std::fprintf(f, "property double true_k1\nproperty double true_k2\n");
+          std::fprintf(f, "property uchar scored\nproperty uchar has_dir\n");
+          for (const auto& est : ests) {
+            const int k = int(est.k);
+            for (const char* v : {"n", "t2"})
+              for (const char* a : axes) std::fprintf(f, "property double nvv%d_%s%s\n", k, v, a);
+            std::fprintf(f, "property double nvv%d_k1\nproperty double nvv%d_k2\n", k, k);
+          }
+          std::fprintf(f, "element face %zu\nproperty list uchar int vertex_indices\nend_header\n", c.plain.face.size());
+          auto put3 = [f](const Eigen::Vector3d& v) { std::fwrite(v.data(), sizeof(double), 3, f); };
+          auto put = [f](double x) { std::fwrite(&x, sizeof x, 1, f); };
+          for (std::size_t i = 0; i < m.vert.size(); ++i) {
+            const Truth t = TruthAt(s, clean.vert[i].cP());
+            put3(c.plain.pos[i]);
+            put3(t.n);
+            put3(t.hasDir ? t.t2 : Eigen::Vector3d::Zero());
+            put(t.k1);
+            put(t.k2);
+            const unsigned char flags[2] = {t.use, t.hasDir};
+            std::fwrite(flags, 1, 2, f);
+            for (const auto& ej : e) {
+              put3(ej[i].n);
+              put3(ej[i].t2);
+              put(ej[i].k1);
+              put(ej[i].k2);
+            }
+          }
+          for (const auto& fc : c.plain.face) {
+            const unsigned char three = 3;
+            std::fwrite(&three, 1, 1, f);
+            std::fwrite(fc.data(), sizeof(int), 3, f);
+          }
+          std::fclose(f);
+          std::fprintf(list.f(), "%s,%s,%g,%u,%s,%zu,%g\n", section, s.name, noise * 100, seed, file, m.vert.size(),
+                       CurvScale(s));
+        }
+  }
+  std::printf("wrote %d meshes to %s\n", count, outDir.c_str());
   return 0;
 }
 

@@ -1,10 +1,16 @@
 #!/bin/sh
 # Regenerates docs/accuracy.md, its full tables docs/accuracy/*.csv and docs/images/accuracy_*.png
 # from scratch: configures build-bench/ with the benchmarks, builds nvv_bench_accuracy, runs its
-# five sections (bench/accuracy.cpp) and the quadric fit's levers (bench/explore_fit.cpp), and
+# five sections (bench/accuracy.cpp), the quadric fit's levers (bench/explore_fit.cpp) and the
+# Python libraries' estimators on the smooth sections' meshes (bench/python_peers.py), and
 # turns their tables and CSV files into the page, the CSV files beside it and the plots
 # (bench/accuracy_report.py, matplotlib from Debian: apt-get install python3-matplotlib).
+# The Python estimators run in a virtual environment, build-bench/pyvenv, made with Debian's
+# python3-venv and the pinned packages of bench/python_peers_requirements.txt from PyPI (made
+# anew when that file changes; open3d needs Debian's libusb-1.0-0: scripts/install-deps.sh).
 # Set NVV_CPU_LOCK=/path/to/lockfile to run each build / run step under flock(1).
+# NVV_ACCURACY_ONLY=python reruns only the Python estimators and rewrites the page from the
+# other sections' output of the last full run (build-bench/accuracy/), with that run's time.
 set -eu
 cd "$(dirname "$0")/.."
 start=$(date +%s)
@@ -14,21 +20,50 @@ lock cmake -S . -B build-bench -G Ninja -DNVV_BUILD_BENCH=ON -DNVV_BUILD_PLUGIN=
   -DCMAKE_BUILD_TYPE=Release >/dev/null
 lock ninja -C build-bench -j2 nvv_bench_accuracy nvv_bench_explore_fit
 out=build-bench/accuracy
-rm -rf "$out"
-mkdir -p "$out"
-for s in grids variants f1 near real; do
+
+# The Python estimators on the meshes of the grids and variants sections.
+run_python_peers() {
   t0=$(date +%s)
-  lock build-bench/bench/nvv_bench_accuracy "$s" "$out" >"$out/$s.md"
-  echo "section $s: $(( $(date +%s) - t0 )) s"
-done
-# The quadric fit's levers: slope-row weight (l_ave) and number of fits, at k = 3 and 5.
-lock sh -c '
-  echo "| k | noise | slope weight | fits | normal (deg) | cylinder min. direction (deg) | sphere curvature (%) |"
-  echo "|---|---|---|---|---|---|---|"
-  for a in "3 5 1 1" "3 5 2 1" "3 5 4 1" "3 5 2 2" "3 5 2 3" "5 5 2 1" "5 5 2 2" "3 20 2 1" "3 20 2 2" "5 20 2 1" "5 20 2 2"; do
-    build-bench/bench/nvv_bench_explore_fit $a
-  done' >"$out/levers.md"
+  py=build-bench/pyvenv
+  req=bench/python_peers_requirements.txt
+  if [ ! -x "$py/bin/python" ] || ! cmp -s "$req" "$py/requirements.txt"; then
+    rm -rf "$py"
+    /usr/bin/python3 -m venv "$py"
+    "$py/bin/pip" install -q --disable-pip-version-check -r "$req"
+    cp "$req" "$py/requirements.txt"
+  fi
+  t1=$(date +%s)
+  rm -rf "$out/python_meshes"
+  mkdir -p "$out/python_meshes"
+  lock build-bench/bench/nvv_bench_accuracy export "$out/python_meshes" >/dev/null
+  lock "$py/bin/python" bench/python_peers.py "$out/python_meshes" "$out/python_peers.csv" >"$out/python_peers.log"
+  echo "$(( $(date +%s) - t1 ))" >"$out/python_seconds.txt"
+  echo "python peers: $(( $(date +%s) - t1 )) s (and $(( t1 - t0 )) s for the virtual environment)"
+}
+
+if [ "${NVV_ACCURACY_ONLY:-}" = python ]; then
+  [ -f "$out/full_seconds.txt" ] || { echo "NVV_ACCURACY_ONLY=python needs a full run's $out first" >&2; exit 2; }
+  run_python_peers
+  seconds=$(cat "$out/full_seconds.txt")
+else
+  rm -rf "$out"
+  mkdir -p "$out"
+  for s in grids variants f1 near real; do
+    t0=$(date +%s)
+    lock build-bench/bench/nvv_bench_accuracy "$s" "$out" >"$out/$s.md"
+    echo "section $s: $(( $(date +%s) - t0 )) s"
+  done
+  # The quadric fit's levers: slope-row weight (l_ave) and number of fits, at k = 3 and 5.
+  lock sh -c '
+    echo "| k | noise | slope weight | fits | normal (deg) | cylinder min. direction (deg) | sphere curvature (%) |"
+    echo "|---|---|---|---|---|---|---|"
+    for a in "3 5 1 1" "3 5 2 1" "3 5 4 1" "3 5 2 2" "3 5 2 3" "5 5 2 1" "5 5 2 2" "3 20 2 1" "3 20 2 2" "5 20 2 1" "5 20 2 2"; do
+      build-bench/bench/nvv_bench_explore_fit $a
+    done' >"$out/levers.md"
+  run_python_peers
+  seconds=$(( $(date +%s) - start ))
+  echo "$seconds" >"$out/full_seconds.txt"
+fi
 rm -f docs/accuracy/*.csv   # the report writes every table family afresh
-/usr/bin/python3 bench/accuracy_report.py "$out" bench/accuracy.md.in docs/accuracy.md docs/images \
-  "$(( $(date +%s) - start ))"
+/usr/bin/python3 bench/accuracy_report.py "$out" bench/accuracy.md.in docs/accuracy.md docs/images "$seconds"
 echo "docs/accuracy.md regenerated in $(( $(date +%s) - start )) s"
