@@ -6,11 +6,16 @@
 //
 // Usage: nvv_docgen FILE.md            rewrites the blocks in place
 //        nvv_docgen --check FILE.md    exits 1 (and says which block) when a block is out of date
-//        nvv_docgen --print parameters|mlx|help
+//        nvv_docgen --print parameters|mlx|help|json
+// `--print json` is the parameter table as JSON, for programs outside C++ (the Python tests):
+//   {"filter": ..., "python_name": ..., "parameters": [{"name", "type" (float|int|bool|enum),
+//    "label", "help", "default", "min", "max", "choices", "tokens", "advanced"}, ...],
+//    "save_file": {"name", "label", "help"}}
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/help_text.h"
 #include "filter/filter_options.h"
@@ -50,6 +55,52 @@ std::string ParameterTable() {
   return s.str();
 }
 
+std::string JsonString(const char* text) {
+  std::string s = "\"";
+  for (const char* c = text; *c; ++c) {
+    const unsigned char u = static_cast<unsigned char>(*c);
+    if (*c == '"' || *c == '\\') s += std::string("\\") + *c;
+    else if (u < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", u);
+      s += buf;
+    } else s += *c;
+  }
+  return s + "\"";
+}
+
+std::string JsonNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+std::string JsonList(const std::vector<const char*>& items) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < items.size(); ++i) s += (i ? ", " : "") + JsonString(items[i]);
+  return s + "]";
+}
+
+std::string ParameterJson() {
+  static const char* kTypes[] = {"float", "int", "bool", "enum"};
+  std::ostringstream s;
+  s << "{\n  \"filter\": " << JsonString(nvv::kFilterName) << ",\n  \"python_name\": "
+    << JsonString(nvv::kPythonFilterName) << ",\n  \"parameters\": [\n";
+  const auto& table = nvv::FilterParameterTable();
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const nvv::ParamSpec& p = table[i];
+    s << "    {\"name\": " << JsonString(p.name) << ", \"type\": \"" << kTypes[int(p.type)] << "\", \"label\": "
+      << JsonString(p.label) << ",\n     \"default\": " << JsonNumber(p.defaultValue) << ", \"min\": "
+      << JsonNumber(p.minValue) << ", \"max\": " << JsonNumber(p.maxValue) << ", \"choices\": " << JsonList(p.choices)
+      << ", \"tokens\": " << JsonList(p.tokens) << ", \"advanced\": " << (p.advanced ? "true" : "false")
+      << ",\n     \"help\": " << JsonString(p.help) << "}" << (i + 1 < table.size() ? "," : "") << "\n";
+  }
+  const nvv::SaveFileSpec& save = nvv::ResultPlyParameter();
+  s << "  ],\n  \"save_file\": {\"name\": " << JsonString(save.name) << ", \"label\": " << JsonString(save.label)
+    << ", \"help\": " << JsonString(save.help) << "}\n}\n";
+  return s.str();
+}
+
 std::string Block(const std::string& name) {
   if (name == "parameters") return ParameterTable();
   if (name == "mlx") return "```xml\n" + nvv::MlxScript() + "```\n";
@@ -86,12 +137,13 @@ std::string Regenerate(const std::string& text, std::string& stale) {
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   if (mode == "--print" && argc == 3) {
-    std::fputs(Block(argv[2]).c_str(), stdout);
-    return Block(argv[2]).empty() ? 2 : 0;
+    const std::string out = std::string(argv[2]) == "json" ? ParameterJson() : Block(argv[2]);
+    std::fputs(out.c_str(), stdout);
+    return out.empty() ? 2 : 0;
   }
   const bool check = mode == "--check";
   if (argc != (check ? 3 : 2)) {
-    std::fprintf(stderr, "usage: nvv_docgen [--check] FILE.md | nvv_docgen --print parameters|mlx|help\n");
+    std::fprintf(stderr, "usage: nvv_docgen [--check] FILE.md | nvv_docgen --print parameters|mlx|help|json\n");
     return 2;
   }
   const std::string path = argv[check ? 2 : 1];
