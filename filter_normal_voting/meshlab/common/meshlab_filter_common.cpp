@@ -1,5 +1,7 @@
 #include "meshlab_filter_common.h"
 
+#include <algorithm>
+
 #include <vcg/complex/algorithms/update/selection.h>
 
 #include "filter/run_filter.h"
@@ -58,7 +60,14 @@ QString ReadOptions(const RichParameterList& par, nvv::FilterOptions& options, Q
     if (!par.hasParameter(name)) continue;  // scripts written for an older version keep the defaults
     double value = 0;
     switch (p.type) {
-      case nvv::ParamType::Float: value = par.getFloat(name); break;
+      case nvv::ParamType::Float:
+        value = par.getFloat(name);
+        // MeshLab keeps a float parameter in single precision (FloatValue holds a float, in the
+        // double build too), so a bound given exactly arrives rounded (1e30 as 1.0000000150e30)
+        // and would be refused as outside the range: a value that rounds to a bound is the bound.
+        if (float(value) == float(p.maxValue)) value = std::min(value, p.maxValue);
+        if (float(value) == float(p.minValue)) value = std::max(value, p.minValue);
+        break;
       case nvv::ParamType::Int: value = par.getInt(name); break;
       case nvv::ParamType::Bool: value = par.getBool(name) ? 1 : 0; break;
       case nvv::ParamType::Enum: value = par.getEnum(name); break;
