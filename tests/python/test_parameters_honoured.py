@@ -1,0 +1,153 @@
+# Every parameter of the table changes what it should when set through PyMeshLab. A parameter
+# added to the table without a case here fails test_every_parameter_has_a_case.
+import numpy as np
+import pytest
+
+import pymeshlab
+from conftest import CAD, load, parameters
+
+CREASE, CORNER = 1, 2
+
+
+def run(path=CAD, **kwargs):
+    """Runs the filter on a fresh mesh; returns the dict and the mesh's per-vertex outputs."""
+    ms = path if isinstance(path, pymeshlab.MeshSet) else load(path)
+    out = ms.compute_normal_vector_voting(**kwargs)
+    m = ms.current_mesh()
+    return {
+        "dict": out,
+        "quality": m.vertex_scalar_array().copy(),
+        "color": m.vertex_color_array().copy(),
+        "normal": m.vertex_normal_matrix().copy(),
+        "selected": m.vertex_selection_array().copy(),
+        "cls": m.vertex_custom_scalar_attribute_array("nvv_class").copy(),
+    }
+
+
+def count(r, *classes):
+    return int(sum(np.sum(r["cls"] == c) for c in classes))
+
+
+def quality_diff(a, b):
+    return float(np.max(np.abs(a["quality"] - b["quality"])))
+
+
+def colour_diffs(a, b):
+    return int(np.sum(a["color"] != b["color"]))
+
+
+def roof(alpha_deg=150.0, n=33, half=16.0, length=32.0):
+    """Two planes meeting along the y axis, their normals alpha apart (the sharp roof of the
+    project's synthetic shapes): only the sign-aware rule finds its ridge."""
+    slope = np.tan(np.radians(alpha_deg) / 2)
+    s, t = np.meshgrid(np.arange(n) / (n - 1), np.arange(n) / (n - 1))
+    x = half * (2 * s - 1)
+    v = np.stack([x, length * (t - 0.5), -slope * np.abs(x)], axis=-1).reshape(-1, 3)
+    faces = []
+    for j in range(n - 1):
+        for i in range(n - 1):
+            a, b, c, d = j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i
+            faces += [(a, b, c), (a, c, d)]
+    ms = pymeshlab.MeshSet()
+    ms.add_mesh(pymeshlab.Mesh(vertex_matrix=v, face_matrix=np.array(faces, dtype=np.int32)))
+    return ms
+
+
+@pytest.fixture(scope="module")
+def base():
+    return run()
+
+
+def check_neighbourhood_k(base):
+    assert quality_diff(base, run(neighbourhood_k=6)) > 1e-3
+
+
+def check_absolute_radius(base):
+    r = run(absolute_radius=3.5)
+    assert quality_diff(base, r) > 1e-3
+    assert r["dict"]["absolute_radius"] == pytest.approx(3.5)
+
+
+def check_crease_angle(base):
+    assert count(run(crease_angle=30), CREASE, CORNER) > count(base, CREASE, CORNER) + 50
+
+
+def check_corner_angle(base):
+    assert count(run(corner_angle=10), CORNER) > count(base, CORNER) + 10
+
+
+def check_stop_at_creases(base):
+    assert quality_diff(run(curvature_fit=1), run(curvature_fit=1, stop_at_creases=False)) > 1e-3
+
+
+def check_thin_creases(base):
+    thin = run(crease_angle=30)  # at 30 deg the part's crease band is wide
+    wide = run(crease_angle=30, thin_creases=False)
+    thinned = thin["dict"]["thinned_vertices"]
+    assert thinned > 100
+    assert count(wide, CREASE, CORNER) == count(thin, CREASE, CORNER) + thinned
+    assert wide["dict"]["thinned_vertices"] == 0
+
+
+def check_curvature_fit(base):
+    assert quality_diff(base, run(curvature_fit="Taubin matrix (paper)")) > 1e-3
+
+
+def check_fit_rounds(base):
+    assert quality_diff(base, run(fit_rounds=1)) > 1e-3
+
+
+def check_cubic_fit(base):
+    assert quality_diff(base, run(cubic_fit=False)) > 1e-3
+
+
+def check_class_rule(base):
+    assert count(run(roof()), CREASE) > 20
+    assert count(run(roof(), class_rule="Paper's eigenvalue order"), CREASE) == 0
+
+
+def check_update_normals(base):
+    loaded_ms = load(CAD)  # kept alive: current_mesh() is a reference into its MeshSet
+    loaded = loaded_ms.current_mesh().vertex_normal_matrix()
+    r = run(update_normals=False)
+    assert np.max(np.linalg.norm(loaded - r["normal"], axis=1)) < 1e-6
+    assert np.max(np.linalg.norm(base["normal"] - r["normal"], axis=1)) > 1e-2
+
+
+def check_quality(base):
+    assert set(np.unique(run(quality=6)["quality"])) == {0.0, 1.0, 2.0}
+
+
+def check_color(base):
+    r = run(color="Quality ramp")
+    assert colour_diffs(base, r) > len(r["color"]) // 2
+
+
+def check_color_clamp_percentile(base):
+    r = run(color=1, color_clamp_percentile=30)
+    assert colour_diffs(run(color=1), r) > len(r["color"]) // 4
+
+
+def check_selection(base):
+    assert int(np.sum(base["selected"])) == 0
+    r = run(selection="Creases and corners")
+    assert int(np.sum(r["selected"])) == count(r, CREASE, CORNER)
+    assert int(np.sum(run(selection="Corners only")["selected"])) == count(r, CORNER)
+
+
+def check_max_neighbourhood(base):
+    r = run(max_neighbourhood=16)
+    assert quality_diff(base, r) > 1e-3
+    assert r["dict"]["capped_vertices"] > 0
+
+
+CASES = {name[len("check_"):]: f for name, f in globals().items() if name.startswith("check_")}
+
+
+def test_every_parameter_has_a_case():
+    assert sorted(p["name"] for p in parameters()) == sorted(CASES)
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_parameter_is_honoured(name, base):
+    CASES[name](base)
