@@ -154,14 +154,15 @@ vpy=$build/venv-test/bin/python
 
 log "== pytest tests/python"
 suite_start=$(date +%s)
-rm -f "$build/pytest.xml"
+rm -f "$build/pytest.xml" "$build/measurements.txt"
 set +e
-( cd "$repo" && NVV_CLI="$cli" NVV_PARAMS_JSON="$build/parameters.json" NVV_PYTEST_TMP="$build/pytest-tmp" \
+( cd "$repo" && NVV_CLI="$cli" NVV_PARAMS_JSON="$build/parameters.json" NVV_PYTEST_REPORT="$build/measurements.txt" \
   heavy "$vpy" -m pytest tests/python -p no:cacheprovider -rs -v --junitxml="$build/pytest.xml" \
   --basetemp="$build/pytest-tmp" ) 2>&1 | tee "$build/pytest.log"
 pytest_rc=${PIPESTATUS[0]}
 set -e
 suite_seconds=$(( $(date +%s) - suite_start ))
+[ ! -f "$build/measurements.txt" ] || cat "$build/measurements.txt"
 read -r total failed errors skipped < <("$python" - "$build/pytest.xml" <<'PY'
 import sys, xml.etree.ElementTree as ET
 try:

@@ -4,6 +4,8 @@
 #   NVV_PARAMS_JSON  the parameter table as JSON (`nvv_docgen --print json`), or NVV_DOCGEN the
 #                    program (default: the first build*/tools/nvv_docgen of the repository)
 #   NVV_CLI          the command-line tool nvv (default: the first build*/filter_normal_voting/cli/nvv)
+#   NVV_PYTEST_REPORT  a file the measurements are appended to (PyMeshLab redirects the standard
+#                    output while it works, and some printed lines get lost)
 import functools
 import glob
 import json
@@ -171,6 +173,15 @@ def read_ply_vertices(path):
 def ply_positions(path):
     v = read_ply_vertices(path)
     return np.stack([v["x"], v["y"], v["z"]], axis=1).astype(float)
+
+
+def report(line):
+    """A measurement: printed, and appended to $NVV_PYTEST_REPORT when set."""
+    print(line, flush=True)
+    path = os.environ.get("NVV_PYTEST_REPORT")
+    if path:
+        with open(path, "a") as f:
+            f.write(line + "\n")
 
 
 def rss_bytes():

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import pymeshlab
-from conftest import CAD, CAD_CLEAN, load, ply_positions, read_ply
+from conftest import CAD, CAD_CLEAN, load, ply_positions, read_ply, report
 
 SMOOTHING = dict(stepsmoothnum=3, boundary=True, cotangentweight=False)
 
@@ -36,7 +36,7 @@ def test_crease_preserving_smoothing_keeps_creases_and_removes_noise():
     assert flat.sum() > 200
     rms = lambda p: float(np.sqrt(np.mean(p[flat, 2] ** 2)))
     err = lambda p: float(np.mean(np.linalg.norm(p[crease] - clean[crease], axis=1)))
-    print("[chain smoothing] %d crease/corner vertices kept in place; bottom-face noise RMS %.4f -> %.4f (plain "
+    report("[chain smoothing] %d crease/corner vertices kept in place; bottom-face noise RMS %.4f -> %.4f (plain "
           "Laplacian %.4f); mean distance of crease vertices from the clean shape: noisy %.4f, chain %.4f, plain "
           "Laplacian %.4f" % (kept, rms(noisy), rms(chain), rms(plain), err(noisy), err(chain), err(plain)))
     assert rms(chain) < 0.5 * rms(noisy)
@@ -90,12 +90,12 @@ def test_feature_aware_simplification_keeps_creases_closer_at_the_same_face_budg
         faces = ms.current_mesh().face_number()
         d, t = distance_from_points(ms, original), distance_from_points(ms, truth)
         outcomes[name] = (faces, d["mean"], d["RMS"], d["max"], t["mean"])
-        print("[chain simplification] %-26s %5d faces: distance of %d crease vertices: mean %.4f RMS %.4f max %.4f "
+        report("[chain simplification] %-26s %5d faces: distance of %d crease vertices: mean %.4f RMS %.4f max %.4f "
               "(clean crease positions: mean %.4f)" % ((name,) + (faces,) + (len(idx),) + outcomes[name][1:]))
     plain, weighted = outcomes["plain decimation"], outcomes["quality-weighted (class)"]
     for faces, *_ in (plain, weighted):
         assert abs(faces - budget) <= budget // 50
-    print("[chain simplification] quality-weighted: mean crease distance %.1f%% of plain decimation's, RMS %.1f%%"
+    report("[chain simplification] quality-weighted: mean crease distance %.1f%% of plain decimation's, RMS %.1f%%"
           % (100 * weighted[1] / plain[1], 100 * weighted[2] / plain[2]))
     assert weighted[1] < 0.8 * plain[1]
     assert weighted[2] < plain[2]

@@ -12,7 +12,7 @@ import pytest
 
 import pymeshlab
 import pymeshlab_normal_voting
-from conftest import CAD, FILTER, SMALL, assert_same_snapshot, load, parameters, read_ply_vertices, snapshot
+from conftest import CAD, FILTER, SMALL, assert_same_snapshot, load, parameters, read_ply_vertices, report, snapshot
 
 PYTHON_TYPES = {"float": float, "int": int, "bool": bool, "enum": int}
 PRINTED_TYPES = {"float": "float", "int": "int", "bool": "bool", "enum": "str"}
@@ -155,7 +155,7 @@ FLOAT_KEYS = ["k1_min", "k1_max", "k2_min", "k2_max", "absolute_radius", "mean_e
 def test_returned_dict_holds_the_summary():
     ms = load(CAD)
     out = ms.compute_normal_vector_voting(selection="Creases and corners")
-    print("[dict]", out)
+    report("[dict] %s" % out)
     assert set(out) == set(INT_KEYS) | set(FLOAT_KEYS) | {"sign_aware_rule"}
     for k in INT_KEYS:
         assert type(out[k]) is int, k
@@ -264,7 +264,7 @@ def test_results_equal_the_command_line_tools(cli, tmp_path):
               "nvv_lambda1", "nvv_lambda2", "nvv_lambda3", "quality", "nx", "ny", "nz"]:
         a, b = ref[f].astype(float), got[f].astype(float)
         worst = max(worst, float(np.max(np.abs(a - b) / (1e-3 + np.abs(a)))))
-    print("[PyMeshLab vs nvv CLI] max relative difference of the results: %.3g" % worst)
+    report("[PyMeshLab vs nvv CLI] max relative difference of the results: %.3g" % worst)
     assert worst < 1e-4
     for f in ["red", "green", "blue", "alpha", "nvv_flags", "nvv_selected"]:
         assert np.array_equal(ref[f], got[f]), f
