@@ -1,6 +1,5 @@
 # One Python process calling the filter many times, as a batch script does (same results, memory
-# bounded); and the README's
-# Python example, run exactly as printed, with the installed package.
+# bounded); and the README's Python example, run exactly as printed, with the installed package.
 import os
 import re
 import shutil
