@@ -3,18 +3,21 @@
 # ("py3-none-any"), which pip would install on any machine.
 import os
 
-from setuptools import setup
+from setuptools import Distribution, setup
 from setuptools.command.bdist_wheel import bdist_wheel
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PLUGIN = os.path.join(HERE, "pymeshlab_normal_voting", "lib", "libfilter_normal_voting.so")
 
 
-class PluginWheel(bdist_wheel):
-    def finalize_options(self):
-        super().finalize_options()
-        self.root_is_pure = False
+class BinaryDistribution(Distribution):
+    """Holds a compiled file: installed into platlib (the wheel's root), not purelib."""
 
+    def has_ext_modules(self):
+        return True
+
+
+class PluginWheel(bdist_wheel):
     def get_tag(self):
         # The plugin's platform: the build script checks the glibc and libstdc++ symbol versions
         # the plugin needs against PyMeshLab 2025.7.post1's own tag (manylinux_2_35_x86_64).
@@ -25,4 +28,4 @@ if not os.path.isfile(PLUGIN):
     raise SystemExit("pymeshlab_normal_voting: %s is missing; build the wheel with "
                      "scripts/pymeshlab/run-tests-pymeshlab.sh" % PLUGIN)
 
-setup(cmdclass={"bdist_wheel": PluginWheel})
+setup(distclass=BinaryDistribution, cmdclass={"bdist_wheel": PluginWheel})

@@ -136,8 +136,9 @@ case $(basename "$wheel") in
   pymeshlab_normal_voting-0.1.0-py3-none-manylinux_2_35_x86_64.whl) ;;
   *) die "unexpected wheel name $(basename "$wheel")" ;;
 esac
-"$python" -m zipfile -l "$wheel" | grep -q 'pymeshlab_normal_voting/lib/libfilter_normal_voting.so' ||
-  die "the wheel lacks the plugin"
+# (the listing first: grep -q would stop reading early and fail the pipe)
+listing=$("$python" -m zipfile -l "$wheel")
+grep -q '^pymeshlab_normal_voting/lib/libfilter_normal_voting.so ' <<< "$listing" || die "the wheel lacks the plugin at its root"
 log "wheel: $wheel ($(du -k "$wheel" | cut -f1) KB)"
 
 # ---- 6. a fresh environment with the wheel only, the suite, the README's example
@@ -163,19 +164,19 @@ pytest_rc=${PIPESTATUS[0]}
 set -e
 suite_seconds=$(( $(date +%s) - suite_start ))
 [ ! -f "$build/measurements.txt" ] || cat "$build/measurements.txt"
-read -r total failed errors skipped < <("$python" - "$build/pytest.xml" <<'PY'
+# The tally from pytest's JUnit XML; a run that died before writing it (a crash) counts as 1 failed.
+read -r passed failed skipped < <("$python" - "$build/pytest.xml" <<'PY'
 import sys, xml.etree.ElementTree as ET
 try:
     root = ET.parse(sys.argv[1]).getroot()
 except Exception:
-    print(0, 0, 1, 0); sys.exit()
+    print(0, 1, 0)
+    sys.exit()
 suites = [root] if root.tag == "testsuite" else root.findall("testsuite")
-t = sum(int(s.get(k, 0)) for s in suites for k in ["tests"])
-print(t, *(sum(int(s.get(k, 0)) for s in suites) for k in ["failures", "errors", "skipped"]))
+n = {k: sum(int(s.get(k, 0)) for s in suites) for k in ["tests", "failures", "errors", "skipped"]}
+print(n["tests"] - n["failures"] - n["errors"] - n["skipped"], n["failures"] + n["errors"], n["skipped"])
 PY
 )
-passed=$(( total - failed - errors - skipped ))
-failed=$(( failed + errors ))
 
 log "== README example (as printed, in venv-test)"
 example_rc=0
