@@ -27,8 +27,10 @@ jobs=${NVV_JOBS:-$(nproc)}
 constraints=$here/constraints.txt
 start=$(date +%s)
 log() { echo "[pymeshlab $(date +%H:%M:%S) +$(( $(date +%s) - start ))s] $*"; }
-die() { echo "[pymeshlab] FAILED: $*" >&2; echo "[pymeshlab] FAILED after $(( $(date +%s) - start )) s" >&2; exit 1; }
-trap 'rc=$?; [ $rc -eq 0 ] || echo "[pymeshlab] FAILED (exit $rc, line $LINENO) after $(( $(date +%s) - start )) s" >&2' EXIT
+died=0
+die() { died=1; echo "[pymeshlab] FAILED: $*" >&2; echo "[pymeshlab] FAILED after $(( $(date +%s) - start )) s" >&2; exit 1; }
+# Any other failing command (set -e) is reported too.
+trap 'rc=$?; [ $rc -eq 0 ] || [ $died = 1 ] || echo "[pymeshlab] FAILED (exit $rc) after $(( $(date +%s) - start )) s" >&2' EXIT
 heavy() { if [ -n "${NVV_CPU_LOCK:-}" ]; then flock "$NVV_CPU_LOCK" "$@"; else "$@"; fi; }
 mkdir -p "$build"
 
