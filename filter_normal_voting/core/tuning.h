@@ -38,6 +38,21 @@ constexpr int kMarchFacesPerVertex = 8;
 // nothing there, and every pair of a 100,000-face "book" edge is 10^10 pairs.
 constexpr int kMaxFacesListedPerEdge = 16;
 
+// --- Crease edges, lines and patches (crease_network.h) ----------------------------------------
+
+// A crease edge runs within 45 deg of the crease tangent (a ridge on a noisy grid zigzags by up to
+// half a triangle; 45 deg keeps its steps and refuses the edges across the line) ...
+constexpr double kCreaseEdgeMinCosToTangent = 0.70710678118654752;
+// ... and its two faces lean apart across the line by at least half what two sheets at the
+// vertex's cusp angle do (faces of one sheet differ by noise only).
+constexpr double kCreaseEdgeMinLean = 0.5;
+// Patches of fewer faces than this (about a vertex's fan) are noise between crease edges:
+// merged into the neighbour they share most crease edges with.
+constexpr int kMinPatchFaces = 8;
+// A line's direction at its free end is taken from this many edges back (one noisy edge turns
+// up to 45 deg), and a gap is closed only ahead of it, within 45 deg.
+constexpr int kGapDirectionEdges = 3;
+
 // --- Degenerate input --------------------------------------------------------------------------
 
 // A face is degenerate (no normal, no vote) when its area is below this times l_ave^2: a

@@ -1,0 +1,55 @@
+// What users do with creases: the mesh edges that lie on them, the lines those edges form, and
+// the smooth patches the lines bound. The paper stops at per-vertex labels and names linking
+// crease vertices into curves its open problem (par. 8); this stage works from what pass 1 found
+// at each vertex (the two sheets: their bisector normal, the crease tangent and the cusp angle),
+// not from the raw dihedral angle, so it holds under noise where a dihedral test breaks up.
+//
+//  1. Crease edges (CreaseEdgeTest): a mesh edge between two feature vertices, running along
+//     the crease tangent, whose two faces lean apart across the crease line as much as half the
+//     cusp angle says the sheets do. Between two corners (no tangent) the dihedral angle of the
+//     two faces decides, against the crease angle.
+//  2. Gaps (CloseGaps): a line that stops at a crease vertex (not a corner, not the border)
+//     is continued along feature vertices to another crease edge within the radius g_m.
+//  3. Spurs (DropSpurs): lines shorter than g_m that still stop at a crease vertex are dropped.
+//  4. Lines (TraceLines): crease edges linked into polylines that end at corners, at the
+//     border, at junctions of three or more lines, or close on themselves.
+//  5. Patches (GrowPatches): faces joined across every non-crease edge; patches of fewer faces
+//     than a disc of radius g_m holds are merged into the neighbour they share most crease edges with.
+#ifndef NVV_CORE_CREASE_NETWORK_H
+#define NVV_CORE_CREASE_NETWORK_H
+
+#include <array>
+#include <vector>
+
+#include "surface_graph.h"
+#include "vertex_result.h"
+
+namespace nvv {
+
+struct CreaseLine {
+  std::vector<int> vertices;    // in order along the line; a closed line does not repeat its first
+  bool closed = false;
+  double length = 0;            // sum of its edges' lengths
+  double meanCuspAngle = 0;     // radians, weighted by edge length
+  std::array<int, 2> endCorner{{-1, -1}};  // the corner vertex at each end, or -1
+};
+
+struct CreaseNetwork {
+  std::vector<std::array<int, 2>> edges;  // crease edges as vertex pairs (lower index first), sorted
+  std::vector<float> edgeCuspAngle;       // radians, per edge
+  std::vector<int> edgeLine;              // line of each edge
+  std::vector<CreaseLine> lines;
+  std::vector<int> facePatch;             // per SurfaceGraph face
+  int patchCount = 0;
+  int smallestPatch = 0, largestPatch = 0;  // in faces
+  std::size_t gapEdges = 0;               // edges added by gap closing
+  std::size_t spurEdges = 0;              // edges of short lines with a free end, dropped
+};
+
+// The crease network of a run's results. radius: g_m; creaseAngleDeg: the run's crease angle.
+CreaseNetwork FindCreaseNetwork(const SurfaceGraph& g, const std::vector<VertexResult>& res, double radius,
+                                double creaseAngleDeg);
+
+}  // namespace nvv
+
+#endif
