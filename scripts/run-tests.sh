@@ -7,6 +7,9 @@
 #   2. the parallel core and the corpus again under ThreadSanitizer (clang)
 #   3. meshlab2025: the MeshLab 2025.07 / PyMeshLab 2025.7 builds (float and double) and their
 #      scripted-use, chain and GUI tests, inside a Debian sid chroot made under build-2025/
+#   4. pymeshlab: the plugin built for the real PyMeshLab 2025.7.post1 from pip, packed as the
+#      wheel pymeshlab_normal_voting, and the pytest suite (tests/python/) in a fresh virtual
+#      environment, with the README's Python example run as printed
 # Installs what it needs first. Ends with one line "tests: N passed, M failed, K skipped" over all
 # parts; stops at the first failing part with its output.
 #
@@ -16,6 +19,7 @@
 #   BUILD_DIR=build-tests   main build folder (--quick: build-quick)
 #   NVV_SANITIZERS=0        no AddressSanitizer in part 1, skip part 2
 #   NVV_MESHLAB2025=0       skip part 3
+#   NVV_PYMESHLAB=0         skip part 4
 #   NVV_FUZZ_SECONDS=30     seconds of fuzzing per target after part 1 (0: none)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -33,7 +37,7 @@ mkdir -p "$logs"
 rm -f "$logs"/*.log
 
 # One tally over every part: CTest's "N tests failed out of M" less the tests it lists as
-# skipped (GTEST_SKIP), and GoogleTest's own summaries.
+# skipped (GTEST_SKIP), GoogleTest's own summaries, and the pytest part's "pytest: ..." line.
 tally() {
   local passed=0 failed=0 skipped=0 f bad total skip p b s
   for f in "$logs"/*.ctest.log; do
@@ -49,6 +53,11 @@ tally() {
     b=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$f" | awk '{s += $1} END {print s + 0}')
     s=$(sed -n 's/^\[  SKIPPED \] \([0-9]*\) test.*/\1/p' "$f" | awk '{s += $1} END {print s + 0}')
     passed=$((passed + p)); failed=$((failed + b)); skipped=$((skipped + s))
+  done
+  for f in "$logs"/*.pytest.log; do
+    [ -f "$f" ] || continue
+    read -r p b s < <(sed -n 's/^pytest: \([0-9]*\) passed, \([0-9]*\) failed, \([0-9]*\) skipped$/\1 \2 \3/p' "$f" | tail -1)
+    passed=$((passed + ${p:-0})); failed=$((failed + ${b:-0})); skipped=$((skipped + ${s:-0}))
   done
   part "done"
   grep -h '(Skipped)$' "$logs"/*.ctest.log 2>/dev/null | sed 's/^ */skipped: /' || true
@@ -103,5 +112,11 @@ if [ "${NVV_MESHLAB2025:-1}" != 0 ]; then
   cat "$logs/make-chroot.txt"
   NVV_CLI="$here/$build/filter_normal_voting/cli/nvv" bash scripts/meshlab2025/run-tests-2025.sh 2>&1 |
     tee "$logs/meshlab2025.gtest.log"
+fi
+
+if [ "${NVV_PYMESHLAB:-1}" != 0 ]; then
+  part "PyMeshLab 2025.7 from pip"
+  bash scripts/pymeshlab/run-tests-pymeshlab.sh 2>&1 |
+    tee "$logs/pymeshlab.pytest.log"
 fi
 tally
