@@ -1,7 +1,6 @@
 // Crease edges, lines and patches (core/crease_network.h) on shapes whose lines and patches are
 // known: a cube (12 lines between 8 corners, 6 patches), a capped cylinder (2 closed lines, 3
-// patches), both clean and with 10 % of l_ave noise along the normals. (At 20 % a gap longer
-// than g_m still lets one patch run into its neighbour on each: not yet asserted.)
+// patches), clean and with 10 % (cube: also 20 %) of l_ave noise along the normals.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -98,17 +97,28 @@ std::set<int> EndCorners(const nvv::CreaseNetwork& net) {
 }  // namespace
 
 TEST(CreaseNetwork, ACubeHasTwelveLinesEightCornersAndSixPatches) {
-  for (double noise : {0.0, 0.1}) {
+  for (double noise : {0.0, 0.1, 0.2}) {
     TMesh m;
     nvv_shapes::Cube(m, 5.0, 21);
     if (noise > 0) NoiseAlongNormals(m, noise * 0.5, 7);  // l_ave = 0.5
     const Network n = Find(m);
-    EXPECT_EQ(12u, n.net.lines.size()) << "noise " << noise;
     EXPECT_EQ(6, n.net.patchCount) << "noise " << noise;
+    double total = 0, cusp = 0;
     for (const auto& l : n.net.lines) {
       EXPECT_FALSE(l.closed);
-      EXPECT_NEAR(10.0, l.length, 2.0) << "noise " << noise;  // an edge of the cube, less the corners' blobs
-      EXPECT_NEAR(90.0, l.meanCuspAngle * 180 / 3.14159265358979, 15.0) << "noise " << noise;
+      total += l.length;
+      cusp += l.length * l.meanCuspAngle * 180 / 3.14159265358979;
+    }
+    EXPECT_NEAR(120.0, total, 12.0) << "noise " << noise;  // the cube's 12 edges of 10
+    EXPECT_NEAR(90.0, cusp / total, 10.0) << "noise " << noise;
+    if (noise <= 0.1) {
+      EXPECT_EQ(12u, n.net.lines.size()) << "noise " << noise;
+      for (const auto& l : n.net.lines) {
+        EXPECT_NEAR(10.0, l.length, 1.0) << "noise " << noise;
+        EXPECT_NEAR(90.0, l.meanCuspAngle * 180 / 3.14159265358979, 15.0) << "noise " << noise;
+      }
+    } else {  // corners classified creases split lines at junctions of three
+      EXPECT_GE(n.net.lines.size(), 12u);
     }
     // Every line ends at corners where the mesh is clean; under noise a corner may be classified
     // a crease, and the line ends at its junction of three.
@@ -117,6 +127,7 @@ TEST(CreaseNetwork, ACubeHasTwelveLinesEightCornersAndSixPatches) {
   }
 }
 
+// (At 20 % the rims still break for some noise seeds: a gap beyond 2 g_m or off the line's direction.)
 TEST(CreaseNetwork, ACappedCylinderHasTwoClosedLinesAndThreePatches) {
   for (double noise : {0.0, 0.1}) {
     TMesh m;

@@ -303,7 +303,7 @@ CreaseNetwork FindCreaseNetwork(const SurfaceGraph& g, const std::vector<VertexR
 
   // Gaps: lines first, then the edges that continue them, then the lines again.
   net.lines = TraceLines(g, res, net.edges, net.edgeCuspAngle, net.edgeLine);
-  const std::vector<Edge> gaps = GapEdges(g, res, net.edges, net.lines, net.edgeLine, radius);
+  const std::vector<Edge> gaps = GapEdges(g, res, net.edges, net.lines, net.edgeLine, tuning::kGapReachOverRadius * radius);
   if (!gaps.empty()) {
     std::vector<std::pair<Edge, float>> all;
     for (std::size_t i = 0; i < net.edges.size(); ++i) all.push_back({net.edges[i], net.edgeCuspAngle[i]});
