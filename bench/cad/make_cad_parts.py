@@ -21,9 +21,11 @@ The parts (millimetres):
   bracket      an L-bracket: 6 mm inner fillet (tangent), two holes with 45 deg countersinks,
                a 30 deg chamfer on the flange's outer edge.
 Mesh sizes:
-  coarse   as STL exporters write them: no size bound, curves split by curvature (12 points
-           per turn), planar faces carry only their boundary nodes (long slivers, fans around
-           holes); Delaunay;
+  export   as STL exporters write them: every curve split into as few segments as turn by at
+           most 30 deg each (straight edges: one segment), faces with (nearly) no nodes of
+           their own: long slivers, fans around holes; Delaunay;
+  coarse   no size bound, element size from the curvature of curves and faces (12 points per
+           turn): planar faces carry only their boundary nodes, curved ones a few rows; Delaunay;
   default  element size bounded by the bounding-box diagonal / 20, 16 points per turn;
   fine     diagonal / 50, 24 points per turn.
 
@@ -56,7 +58,9 @@ import gmsh
 
 SHARP_DEG = 5.0
 SIZES = [
-    # name, size bound as a fraction of the bounding-box diagonal (0: none), points per 2 pi, algorithm
+    # name, size bound as a fraction of the bounding-box diagonal (0: none), points per 2 pi,
+    # algorithm; "export" alone splits curves by their turning and gives faces no nodes
+    ("export", 0.0, 12, 5),
     ("coarse", 0.0, 12, 5),
     ("default", 1 / 20, 16, 6),
     ("fine", 1 / 50, 24, 6),
@@ -219,6 +223,14 @@ def principal_curvatures(s, uv, outward, ksign):
     return max(a, b), min(a, b)
 
 
+def turning(c):
+    """How far curve c's tangent turns along it (radians), from 65 samples."""
+    (t0,), (t1,) = gmsh.model.getParametrizationBounds(1, c)
+    ts = [t0 + (t1 - t0) * i / 64 for i in range(65)]
+    tang = [unit(gmsh.model.getDerivative(1, c, [t])) for t in ts]
+    return sum(math.radians(angle_deg(a, b)) for a, b in zip(tang, tang[1:]))
+
+
 def curvature_sign():
     """+1 or -1: the factor that turns OpenCASCADE's principal curvatures, signed against the
     underlying surface's du x dv, into this benchmark's convention, calibrated on a sphere."""
@@ -246,8 +258,15 @@ def mesh_part(name, build, size, out_dir, ksign, version):
     diag = math.sqrt((xmax - xmin) ** 2 + (ymax - ymin) ** 2 + (zmax - zmin) ** 2)
     gmsh.option.setNumber("Mesh.MeshSizeMax", diag * frac if frac > 0 else 1e22)
     gmsh.option.setNumber("Mesh.MeshSizeMin", 0)
-    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", per_turn)
+    export = sname == "export"
+    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0 if export else per_turn)
     gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 1 if frac > 0 else 0)
+    if export:
+        # As an exporter's angular tolerance: each curve split into as few segments as turn by
+        # at most 360 / per_turn degrees each (a straight line: one segment); faces then get
+        # no nodes of their own.
+        for (d, c) in gmsh.model.getEntities(1):
+            gmsh.model.mesh.setTransfiniteCurve(c, 1 + max(1, math.ceil(turning(c) * per_turn / (2 * math.pi) - 1e-6)))
     gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
     gmsh.option.setNumber("Mesh.Algorithm", algo)
     gmsh.option.setNumber("Mesh.RandomSeed", 1)
