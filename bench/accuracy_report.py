@@ -93,6 +93,22 @@ TABLES = {"smooth_grids": (grids, ("shape", "noise", "estimator")),
           "python_peers": (py, ("section", "shape", "noise", "estimator"))}
 INDEX = {name: {tuple(r[k] for k in keys): r for r in data} for name, (data, keys) in TABLES.items()}
 
+# ---- section "cad" (bench/cad_parts.cpp, parts from bench/cad/make_cad_parts.py): its tables
+# as printed, its CSV files beside the page, and its values for {{v:...}}: cad_f1 (mesh, noise,
+# method, angle), cad_summary (meshes, noise, method), cad_curvature (mesh, noise, estimator).
+cad_rows = {n: rows(n + ".csv") for n in ("cad_f1", "cad_summary", "cad_curvature")}
+INDEX["cad_f1"] = {(r["mesh"], r["noise"], r["method"], r["angle"]): r for r in cad_rows["cad_f1"]}
+INDEX["cad_summary"] = {(r["meshes"], r["noise"], r["method"]): r for r in cad_rows["cad_summary"]}
+INDEX["cad_curvature"] = {(r["mesh"], r["noise"], r["estimator"]): r for r in cad_rows["cad_curvature"]}
+head_cad = open(os.path.join(res, "cad.md")).read().strip() if os.path.exists(os.path.join(res, "cad.md")) else ""
+cad_gmsh = "?"
+if os.path.exists(os.path.join(res, "cad_parts.txt")):
+    cad_gmsh = next((w.split()[1].rstrip(",") for w in open(os.path.join(res, "cad_parts.txt")) if w.startswith("gmsh ")), "?")
+for name in ("cad_f1.csv", "cad_summary.csv", "cad_curvature.csv"):
+    if os.path.exists(os.path.join(res, name)):
+        with open(os.path.join(res, name)) as f_in, open(os.path.join(csv_dir, name), "w") as f_out:
+            f_out.write(f_in.read())
+
 
 def val(table, *key_and_col):
     """One number: val("smooth_grids", "sphere", "5", "NVV quadric (default) k=3", "normal_med")."""
@@ -725,6 +741,7 @@ subst = {
     "F1_RELIABLE": str(f1_reliable), "F1_CELLS": str(f1_cells),
     "F1_FAIL": "; ".join(f1_fail) if f1_fail else "none",
     "FLIPPED": ", ".join(flipped) if flipped else "none",
+    "HEAD_CAD": head_cad, "CAD_GMSH": cad_gmsh,
 }
 subst.update(py_text)
 for k, v in subst.items():

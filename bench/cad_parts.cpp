@@ -363,6 +363,8 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
   std::printf("\n#### Mean F1 over the meshes of each size\n\n"
               "| meshes | noise | NVV defaults | NVV best φ | MeshLab dihedral, best angle | CGAL sharp edges, best angle |\n"
               "|---|---|---|---|---|---|\n");
+  Csv scsv(outDir, "cad_summary.csv", "meshes,noise,method,f1,near_f1");
+  const char* pooledNames[4] = {"NVV defaults", "NVV best phi", "MeshLab dihedral best", "CGAL sharp edges best"};
   for (const char* size : {"export", "coarse", "default", "fine", "ABC"}) {
     if (!pooled.count(size)) continue;
     for (const auto& kv : pooled[size]) {
@@ -370,7 +372,10 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
       for (int j = 0; j < 4; ++j) {
         double s = 0, t = 0;
         for (const auto& r : kv.second) { s += r[j]; t += r[j + 4]; }
-        std::printf(" %.2f, ±1: %.2f |", s / kv.second.size(), t / kv.second.size());
+        s /= kv.second.size();
+        t /= kv.second.size();
+        std::printf(" %.2f, ±1: %.2f |", s, t);
+        std::fprintf(scsv.f(), "%s,%g,%s,%g,%g\n", size, kv.first * 100, pooledNames[j], s, t);
       }
       std::printf("\n");
     }
