@@ -192,9 +192,9 @@ Score ScoreBoth(const std::vector<char>& found, const std::vector<char>& truth,
   return s;
 }
 
-// "7 % / 24": the share of triangles whose longest edge is over 10 times their height on it,
-// and the largest number of triangles at a vertex.
-std::string Shape(const PlainMesh& m) {
+// The share of triangles (%) whose longest edge is over 10 times their height on it, and the
+// largest number of triangles at a vertex.
+std::pair<double, int> Shape(const PlainMesh& m) {
   int slivers = 0;
   std::vector<int> valence(m.pos.size(), 0);
   for (const auto& f : m.face) {
@@ -206,10 +206,7 @@ std::string Shape(const PlainMesh& m) {
     const double area2 = (m.pos[f[1]] - m.pos[f[0]]).cross(m.pos[f[2]] - m.pos[f[0]]).norm();
     if (longest * longest > 10 * area2) ++slivers;
   }
-  char b[48];
-  std::snprintf(b, sizeof b, "%.0f %% / %d", 100.0 * slivers / std::max<std::size_t>(1, m.face.size()),
-                *std::max_element(valence.begin(), valence.end()));
-  return b;
+  return {100.0 * slivers / std::max<std::size_t>(1, m.face.size()), *std::max_element(valence.begin(), valence.end())};
 }
 
 std::string Angles(const std::vector<double>& a) {
@@ -264,14 +261,17 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
   Csv csv(outDir, "cad_f1.csv", "mesh,noise,method,angle,precision,recall,f1,near_precision,near_recall,near_f1");
   Csv ccsv(outDir, "cad_curvature.csv",
            "mesh,noise,estimator,vertices,normal_med,normal_p90,normal_mean,curv_med,curv_p90,curv_mean");
-  std::ostringstream curvTable;
+  Csv mcsv(outDir, "cad_meshes.csv", "mesh,vertices,triangles,l_ave,slivers_pct,max_valence,sharp_vertices,crease_angles");
+  std::ostringstream curvTable, meshTable, infoTable;
   curvTable << "| mesh | noise | vertices | " << ests[0].name << " | " << ests[1].name << " | " << ests[2].name
             << " |\n|---|---|---|---|---|---|\n";
+  meshTable << "| mesh | noise | NVV defaults | NVV best φ | MeshLab dihedral, best angle | CGAL sharp edges, best angle |\n"
+               "|---|---|---|---|---|---|\n";
+  infoTable << "| mesh | vertices | l_ave (mm) | slivers | max. valence | sharp-curve vertices | crease angles |\n"
+               "|---|---|---|---|---|---|---|\n";
   // pooled strict / near F1 per size and noise, for the summary: [size][noise][method]
   std::map<std::string, std::map<double, std::vector<std::vector<double>>>> pooled;
 
-  std::printf("| mesh | vertices | slivers / max. valence | crease angles | noise | NVV defaults | NVV best φ | MeshLab dihedral, best angle | CGAL sharp edges, best angle |\n"
-              "|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& cmp : meshes) {
     const CadMesh& cm = *cmp;
     const std::string size = cm.name == "abc_00000006" ? "ABC" : cm.name.substr(cm.name.rfind('_') + 1);
@@ -279,7 +279,18 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
     Context c0(cm.clean);
     const std::vector<std::vector<int>> ring = OneRings(c0.plain);
     const std::vector<double> dist = EdgeDistance(c0.plain, ring, cm.sharp);
-    const std::string shape = Shape(c0.plain);
+    const std::pair<double, int> shape = Shape(c0.plain);
+    {
+      const int nsharp = int(std::count(cm.sharp.begin(), cm.sharp.end(), 1));
+      char b[256];
+      std::snprintf(b, sizeof b, "| %s | %zu | %s | %.0f %% | %d | %d | %s |\n", cm.name.c_str(), cm.clean.vert.size(),
+                    Num(lave).c_str(), shape.first, shape.second, nsharp, Angles(cm.curveAngles).c_str());
+      infoTable << b;
+      std::string angles = Angles(cm.curveAngles);
+      if (angles.size() > 2 && angles.compare(angles.size() - 2, 2, "°") == 0) angles.erase(angles.size() - 2);
+      std::fprintf(mcsv.f(), "%s,%zu,%zu,%g,%g,%d,%d,\"%s\"\n", cm.name.c_str(), cm.clean.vert.size(), c0.plain.face.size(), lave,
+                   shape.first, shape.second, nsharp, angles == "–" ? "" : angles.c_str());
+    }
     for (double noise : noises) {
       TMesh m;
       vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, const_cast<TMesh&>(cm.clean));
@@ -289,9 +300,10 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
         std::fprintf(csv.f(), "%s,%g,%s,%g,%g,%g,%g,%g,%g,%g\n", cm.name.c_str(), noise * 100, method.c_str(), angle,
                      s.strict.precision, s.strict.recall, s.strict.f1, s.near.precision, s.near.recall, s.near.f1);
       };
-      auto cell = [](const Score& s) {
+      auto cell = [](const Score& s, double angle) {
         char b[96];
-        std::snprintf(b, sizeof b, "%.2f (%.2f / %.2f), ±1: %.2f", s.strict.f1, s.strict.precision, s.strict.recall, s.near.f1);
+        if (angle > 0) std::snprintf(b, sizeof b, "%.2f / %.2f at %g°", s.strict.f1, s.near.f1, angle);
+        else std::snprintf(b, sizeof b, "%.2f / %.2f", s.strict.f1, s.near.f1);
         return std::string(b);
       };
       // this filter with its defaults: classes and estimates from one run
@@ -325,10 +337,9 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
           if (bestAngle[j] == 0 || s[j].strict.f1 > best[j].strict.f1) { best[j] = s[j]; bestAngle[j] = a; }
         }
       }
-      std::printf("| %s | %zu | %s | %s | %g %% | %s | %s (%g°) | %s (%g°) | %s (%g°) |\n", cm.name.c_str(), m.vert.size(),
-                  shape.c_str(), Angles(cm.curveAngles).c_str(), noise * 100, cell(nvvDef).c_str(), cell(best[0]).c_str(), bestAngle[0],
-                  cell(best[1]).c_str(), bestAngle[1], cell(best[2]).c_str(), bestAngle[2]);
-      std::fflush(stdout);
+      meshTable << "| " << cm.name << " | " << noise * 100 << " % | " << cell(nvvDef, 0) << " | " << cell(best[0], bestAngle[0])
+                << " | " << cell(best[1], bestAngle[1]) << " | " << cell(best[2], bestAngle[2]) << " |\n";
+      std::fprintf(stderr, "cad: %s %g %%\n", cm.name.c_str(), noise * 100);
       auto& pool = pooled[size][noise];
       pool.push_back({nvvDef.strict.f1, best[0].strict.f1, best[1].strict.f1, best[2].strict.f1, nvvDef.near.f1,
                       best[0].near.f1, best[1].near.f1, best[2].near.f1});
@@ -352,7 +363,8 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
           ek.push_back(100 * std::abs(out[i].k2 - t.k2) * lave);
         }
         const Stat3 n = Stats(en), k = Stats(ek);
-        curvTable << " | " << Cell(n) << "°; " << Cell(k) << " %" << (e == 0 ? " (" + std::to_string(en.size()) + ")" : "");
+        curvTable << " | " << Num(n.median) << " / " << Num(n.p90) << "°; " << Num(k.median) << " / " << Num(k.p90) << " %"
+                  << (e == 0 && en.size() < near.size() ? " (" + std::to_string(en.size()) + ")" : "");
         std::fprintf(ccsv.f(), "%s,%g,%s,%zu,%g,%g,%g,%g,%g,%g\n", cm.name.c_str(), noise * 100, ests[e].name.c_str(),
                      en.size(), n.median, n.p90, n.mean, k.median, k.p90, k.mean);
       }
@@ -360,7 +372,8 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
     }
   }
 
-  std::printf("\n#### Mean F1 over the meshes of each size\n\n"
+  std::printf("#### Mean F1 over the meshes of each size\n\n"
+              "Strict F1 / ±1-edge F1, averaged over the five parts (the ABC model alone).\n\n"
               "| meshes | noise | NVV defaults | NVV best φ | MeshLab dihedral, best angle | CGAL sharp edges, best angle |\n"
               "|---|---|---|---|---|---|\n");
   Csv scsv(outDir, "cad_summary.csv", "meshes,noise,method,f1,near_f1");
@@ -374,15 +387,19 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
         for (const auto& r : kv.second) { s += r[j]; t += r[j + 4]; }
         s /= kv.second.size();
         t /= kv.second.size();
-        std::printf(" %.2f, ±1: %.2f |", s, t);
+        std::printf(" %.2f / %.2f |", s, t);
         std::fprintf(scsv.f(), "%s,%g,%s,%g,%g\n", size, kv.first * 100, pooledNames[j], s, t);
       }
       std::printf("\n");
     }
   }
+  std::printf("\n#### Every mesh\n\nStrict F1 / ±1-edge F1; \"at\": the angle of the best strict F1 among 20, 30, 45 and "
+              "60°.\n\n%s\n#### The meshes\n\nSlivers: triangles whose longest edge is over 10 times their height on it. "
+              "Crease angles: the sharp model curves' normal-angles.\n\n%s",
+              meshTable.str().c_str(), infoTable.str().c_str());
   std::printf("\n#### Surfaces next to creases\n\nVertices inside faces 1–3 l_ave (along mesh edges) from a sharp curve: "
-              "normal error (deg) and curvature error (%% of 1/l_ave), median / p90 / mean; in brackets, how many of them "
-              "this filter classes as surface (the rest get no curvatures and are not scored).\n\n%s",
+              "normal error (deg) and curvature error (%% of 1/l_ave), median / p90; in brackets, how many of them "
+              "this filter classes as surface where that is not all (the rest get no curvatures and are not scored).\n\n%s",
               curvTable.str().c_str());
   return 0;
 }
