@@ -1,8 +1,9 @@
 #!/bin/sh
 # Regenerates docs/accuracy.md, its full tables docs/accuracy/*.csv and docs/images/accuracy_*.png
 # from scratch: configures build-bench/ with the benchmarks, builds nvv_bench_accuracy, runs its
-# five sections (bench/accuracy.cpp), the quadric fit's levers (bench/explore_fit.cpp) and the
-# Python libraries' estimators on the smooth sections' meshes (bench/python_peers.py), and
+# five sections (bench/accuracy.cpp), the quadric fit's levers (bench/explore_fit.cpp), the
+# Python libraries' estimators on the smooth sections' meshes (bench/python_peers.py) and the
+# "cad" section on parts made by gmsh's OpenCASCADE kernel (bench/cad/make_cad_parts.py), and
 # turns their tables and CSV files into the page, the CSV files beside it and the plots
 # (bench/accuracy_report.py, matplotlib from Debian: apt-get install python3-matplotlib).
 # The Python estimators run in a virtual environment, build-bench/pyvenv, made with Debian's
