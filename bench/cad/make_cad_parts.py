@@ -112,7 +112,6 @@ def part_shallow():
     occ.synchronize()
     vol = occ.getEntities(3)[0][1]
     # A 12 deg ramp cut into the right end: a wedge removed from x = 38..50 on the top.
-    h = 12 * math.tan(math.radians(12))
     p = [occ.addPoint(38, -1, 14.001), occ.addPoint(51, -1, 14.001 - 13 * math.tan(math.radians(12))),
          occ.addPoint(51, -1, 20), occ.addPoint(38, -1, 20)]
     lines = [occ.addLine(p[i], p[(i + 1) % 4]) for i in range(4)]
@@ -120,7 +119,6 @@ def part_shallow():
     wedge = occ.extrude([(2, s)], 0, 32, 0)
     wv = [dt for dt in wedge if dt[0] == 3]
     occ.cut([(3, vol)], wv)
-    del h
 
 
 def drafted_box(x, y, z0, w, d, h, draft_deg):
@@ -390,7 +388,7 @@ def mesh_part(name, build, size, out_dir, ksign, version):
 
 def main():
     if len(sys.argv) != 2:
-        print(__doc__.split("\n")[3], file=sys.stderr)
+        print(next(l for l in __doc__.split("\n") if l.startswith("Usage")), file=sys.stderr)
         return 2
     out_dir = sys.argv[1]
     os.makedirs(out_dir, exist_ok=True)
