@@ -7,6 +7,8 @@
 //   real      fandisk and the ABC model with ground-truth features (real_meshes.cpp)
 //   export    writes the meshes of grids and variants as PLY with the truth and this project's
 //             estimates, for bench/python_peers.py (smooth.cpp)
+//   cad       parts made by gmsh's OpenCASCADE kernel and the ABC model: crease F1 and the
+//             surfaces next to creases (cad_parts.cpp); needs PARTSDIR, bench/cad/make_cad_parts.py's output
 // Prints markdown tables; writes CSV files for the plots into OUTDIR.
 #include <cstdio>
 #include <string>
@@ -15,7 +17,7 @@
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: %s grids|variants|f1|near|real|export OUTDIR\n", argv[0]);
+    std::fprintf(stderr, "usage: %s grids|variants|f1|near|real|export OUTDIR | cad OUTDIR PARTSDIR\n", argv[0]);
     return 2;
   }
   const std::string s = argv[1], out = argv[2];
@@ -23,6 +25,7 @@ int main(int argc, char** argv) {
   if (s == "f1" || s == "near") return nvv_bench::RunCreases(out, s);
   if (s == "real") return nvv_bench::RunReal(out);
   if (s == "export") return nvv_bench::ExportSmooth(out);
+  if (s == "cad" && argc >= 4) return nvv_bench::RunCad(out, argv[3]);
   std::fprintf(stderr, "unknown section %s\n", s.c_str());
   return 2;
 }

@@ -9,6 +9,7 @@ int RunSmooth(const std::string& outDir, const std::string& which);  // "grids" 
 int ExportSmooth(const std::string& outDir);  // their meshes as PLY, for bench/python_peers.py
 int RunCreases(const std::string& outDir, const std::string& which); // "f1" or "near"
 int RunReal(const std::string& outDir);
+int RunCad(const std::string& outDir, const std::string& partsDir);  // bench/cad/make_cad_parts.py's output
 }  // namespace nvv_bench
 
 #endif

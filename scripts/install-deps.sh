@@ -22,7 +22,8 @@ pkgs=(build-essential cmake ninja-build pkg-config dpkg-dev
       qtbase5-dev qtbase5-dev-tools libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libeigen3-dev
       libgtest-dev googletest libcgal-dev libgmp-dev libmpfr-dev libomp-dev tesseract-ocr tesseract-ocr-eng
       clang-14 libclang-rt-14-dev libomp-14-dev python3-matplotlib debootstrap
-      python3-venv libusb-1.0-0)  # the last two: Python venvs (accuracy benchmark, PyMeshLab tests); open3d needs libusb
+      python3-venv libusb-1.0-0   # Python venvs (accuracy benchmark, PyMeshLab tests); open3d needs libusb
+      gmsh python3-gmsh)          # gmsh 4.8.4 with OpenCASCADE: the accuracy benchmark's CAD parts
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,8 +1,9 @@
 #!/bin/sh
 # Regenerates docs/accuracy.md, its full tables docs/accuracy/*.csv and docs/images/accuracy_*.png
 # from scratch: configures build-bench/ with the benchmarks, builds nvv_bench_accuracy, runs its
-# five sections (bench/accuracy.cpp), the quadric fit's levers (bench/explore_fit.cpp) and the
-# Python libraries' estimators on the smooth sections' meshes (bench/python_peers.py), and
+# five sections (bench/accuracy.cpp), the quadric fit's levers (bench/explore_fit.cpp), the
+# Python libraries' estimators on the smooth sections' meshes (bench/python_peers.py) and the
+# "cad" section on parts made by gmsh's OpenCASCADE kernel (bench/cad/make_cad_parts.py), and
 # turns their tables and CSV files into the page, the CSV files beside it and the plots
 # (bench/accuracy_report.py, matplotlib from Debian: apt-get install python3-matplotlib).
 # The Python estimators run in a virtual environment, build-bench/pyvenv, made with Debian's
@@ -10,7 +11,8 @@
 # anew when that file changes; open3d needs Debian's libusb-1.0-0: scripts/install-deps.sh).
 # Set NVV_CPU_LOCK=/path/to/lockfile to run each build / run step under flock(1).
 # NVV_ACCURACY_ONLY=python reruns only the Python estimators and rewrites the page from the
-# other sections' output of the last full run (build-bench/accuracy/), with that run's time.
+# other sections' output of the last full run (build-bench/accuracy/), with that run's time;
+# NVV_ACCURACY_ONLY=cad does the same for the CAD parts (gmsh from Debian: python3-gmsh).
 set -eu
 cd "$(dirname "$0")/.."
 start=$(date +%s)
@@ -41,9 +43,20 @@ run_python_peers() {
   echo "python peers: $(( $(date +%s) - t1 )) s (and $(( t1 - t0 )) s for the virtual environment)"
 }
 
-if [ "${NVV_ACCURACY_ONLY:-}" = python ]; then
-  [ -f "$out/full_seconds.txt" ] || { echo "NVV_ACCURACY_ONLY=python needs a full run's $out first" >&2; exit 2; }
-  run_python_peers
+# Real CAD parts: made and meshed by gmsh's OpenCASCADE kernel (Debian's python3-gmsh) into
+# $out/cad, then scored with the ABC model (bench/cad/make_cad_parts.py, bench/cad_parts.cpp).
+run_cad() {
+  t0=$(date +%s)
+  rm -rf "$out/cad"
+  lock /usr/bin/python3 bench/cad/make_cad_parts.py "$out/cad" >"$out/cad_parts.txt"
+  lock build-bench/bench/nvv_bench_accuracy cad "$out" "$out/cad" >"$out/cad.md"
+  echo "$(( $(date +%s) - t0 ))" >"$out/cad_seconds.txt"
+  echo "section cad: $(( $(date +%s) - t0 )) s"
+}
+
+if [ "${NVV_ACCURACY_ONLY:-}" = python ] || [ "${NVV_ACCURACY_ONLY:-}" = cad ]; then
+  [ -f "$out/full_seconds.txt" ] || { echo "NVV_ACCURACY_ONLY=$NVV_ACCURACY_ONLY needs a full run's $out first" >&2; exit 2; }
+  if [ "$NVV_ACCURACY_ONLY" = python ]; then run_python_peers; else run_cad; fi
   seconds=$(cat "$out/full_seconds.txt")
 else
   rm -rf "$out"
@@ -61,6 +74,7 @@ else
       build-bench/bench/nvv_bench_explore_fit $a
     done' >"$out/levers.md"
   run_python_peers
+  run_cad
   seconds=$(( $(date +%s) - start ))
   echo "$seconds" >"$out/full_seconds.txt"
 fi
