@@ -55,6 +55,10 @@ bool Dispatch(const char* buffer, std::size_t size, MeshFormat format, MeshData&
   if (!ok) {
     out.Clear();
     if (error.empty()) error = "the file is not a valid mesh";
+    // The reason may quote the file's own bytes: no control character reaches a terminal or
+    // splits the one-line message (a PLY keyword holding 0x1d once did).
+    for (char& c : error)
+      if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
   }
   return ok;
 }

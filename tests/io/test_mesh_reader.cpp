@@ -417,6 +417,23 @@ TEST(PlyReader, HugeHeaderCountsFailFastWithoutAllocating) {
   EXPECT_TRUE(none.ok) << none.error;
 }
 
+// Found by the mutation campaign: a header keyword holding byte 0x1d (which Python and some
+// terminals take as a line break) was quoted as it was; every reason is printable ASCII, one line.
+TEST(Readers, ReasonsQuoteTheFilesBytesPrintably) {
+  const std::vector<std::pair<std::string, MeshFormat>> files = {
+      {std::string("ply\nformat ascii 1.0\ne\xd3\x1d\xcb\xa9 vertex 3\nend_header\n"), MeshFormat::Ply},
+      {std::string("ply\nformat ascii 1.0\nelement vertex 1\nproperty fl\x1boat x\nend_header\n"), MeshFormat::Ply},
+      {std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \x07\x1d\n"), MeshFormat::Obj},
+      {std::string("OFF\n3 1 0\n0 0 \x1b[31m\n1 0 0\n0 1 0\n3 0 1 2\n"), MeshFormat::Off},
+      {std::string("solid x\nfacet \x1dnormal 0 0 1\n"), MeshFormat::Stl}};
+  for (const auto& f : files) {
+    const Result r = Read(f.first, f.second);
+    ASSERT_FALSE(r.ok);
+    for (char c : r.error)
+      EXPECT_TRUE(static_cast<unsigned char>(c) >= 32 && static_cast<unsigned char>(c) <= 126) << r.error;
+  }
+}
+
 TEST(PlyReader, TruncatedBinaryFilesFail) {
   const std::string full = TetraPly("binary_little_endian");
   ASSERT_TRUE(Read(full, MeshFormat::Ply).ok);

@@ -204,11 +204,11 @@ inline std::vector<std::pair<std::string, double>> AbsurdParameters() {
     p.push_back({"crease_angle", a});
     p.push_back({"corner_angle", a});
   }
-  for (double r : {-1.0, kNaN, kInf, -kInf}) p.push_back({"absolute_radius", r});
+  for (double r : {-1.0, kNaN, kInf, -kInf, 1e31}) p.push_back({"absolute_radius", r});
   for (const auto& spec : nvv::FilterParameterTable())  // enums: below, past the end, between, NaN
     if (spec.type == nvv::ParamType::Enum)
       for (double e : {-1.0, double(spec.choices.size()), 0.5, 1e9, kNaN}) p.push_back({spec.name, e});
-  for (double c : {15.0, -4.0, 3.5, 1e12, kNaN}) p.push_back({"max_neighbourhood", c});
+  for (double c : {-4.0, 3.5, 1e12, kNaN}) p.push_back({"max_neighbourhood", c});
   for (double q : {-1.0, 50.0, 100.0, kNaN}) p.push_back({"color_clamp_percentile", q});
   return p;
 }
