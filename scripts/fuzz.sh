@@ -16,7 +16,7 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(core ply obj off stl cli)
 for t in "${targets[@]}"; do
-  case "$t" in core|ply|obj|off|stl) ;; *) echo "unknown fuzz target '$t' (core ply obj off stl)" >&2; exit 2 ;; esac
+  case "$t" in core|ply|obj|off|stl|cli) ;; *) echo "unknown fuzz target '$t' (core ply obj off stl cli)" >&2; exit 2 ;; esac
 done
 CXX=clang++-14 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNVV_BUILD_FUZZ=ON \
   -DNVV_BUILD_TESTS=OFF -DNVV_BUILD_PLUGIN=OFF -DNVV_BUILD_CLI=OFF >/dev/null
