@@ -120,19 +120,6 @@ bool LoadTruth(const std::string& path, CadMesh& c) {
   return bool(in);
 }
 
-std::vector<char> TruthFromFea(const std::string& path, std::size_t n) {
-  std::vector<char> t(n, 0);
-  std::ifstream in(path);
-  int count = 0;
-  in >> count;
-  for (int i = 0; i < count; ++i) {
-    int a, b;
-    in >> a >> b;
-    if (a >= 0 && b >= 0 && std::size_t(a) < n && std::size_t(b) < n) t[a] = t[b] = 1;
-  }
-  return t;
-}
-
 std::vector<std::vector<int>> OneRings(const PlainMesh& m) {
   std::vector<std::vector<int>> r(m.pos.size());
   for (const auto& f : m.face)

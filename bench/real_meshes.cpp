@@ -72,19 +72,6 @@ bool LoadMesh(const std::string& path, TMesh& m) {
 
 std::vector<char> TruthFromDihedral(const TMesh& clean, double minAngleDeg) { return DihedralCreaseVertices(clean, minAngleDeg); }
 
-std::vector<char> TruthFromFea(const std::string& path, std::size_t n) {
-  std::vector<char> t(n, 0);
-  std::ifstream in(path);
-  int count = 0;
-  in >> count;
-  for (int i = 0; i < count; ++i) {
-    int a, b;
-    in >> a >> b;
-    if (a >= 0 && b >= 0 && std::size_t(a) < n && std::size_t(b) < n) t[a] = t[b] = 1;
-  }
-  return t;
-}
-
 std::vector<unsigned char> NvvClasses(const TMesh& m, double k, double phi, bool thin = true, bool ridgeFit = true) {
   nvv::Params p = nvv_test::WithK(k);
   p.creaseAngleDeg = phi;
