@@ -28,6 +28,7 @@
 
 #include "crease_shapes.h"
 #include "estimators.h"
+#include "mesh_files.h"
 #include "report.h"
 #include "sections.h"
 
@@ -54,38 +55,6 @@ struct CadMesh {
   std::vector<PointTruth> point;
   std::vector<double> curveAngles;  // normal-angles of the sharp curves (deg), for the table
 };
-
-// Vertices and triangles of an OBJ file ("f a b c", "f a/t/n ..."; polygons fanned).
-bool LoadObj(const std::string& path, TMesh& m) {
-  std::ifstream in(path);
-  if (!in) return false;
-  std::vector<vcg::Point3d> v;
-  std::vector<std::array<int, 3>> f;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string tag;
-    ls >> tag;
-    if (tag == "v") {
-      vcg::Point3d p;
-      ls >> p[0] >> p[1] >> p[2];
-      v.push_back(p);
-    } else if (tag == "f") {
-      std::vector<int> idx;
-      std::string s;
-      while (ls >> s) idx.push_back(std::stoi(s.substr(0, s.find('/'))) - 1);
-      for (std::size_t j = 2; j < idx.size(); ++j) f.push_back({idx[0], idx[j - 1], idx[j]});
-    }
-  }
-  m.Clear();
-  auto vi = vcg::tri::Allocator<TMesh>::AddVertices(m, v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) (vi + i)->P() = v[i];
-  for (const auto& t : f) {
-    if (std::min({t[0], t[1], t[2]}) < 0 || std::size_t(std::max({t[0], t[1], t[2]})) >= v.size()) return false;
-    vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[t[0]], &m.vert[t[1]], &m.vert[t[2]]);
-  }
-  return !v.empty() && !f.empty();
-}
 
 // make_cad_parts.py's .truth file (its format is described there).
 bool LoadTruth(const std::string& path, CadMesh& c) {
@@ -219,7 +188,7 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
       meshes.emplace_back(new CadMesh);
       CadMesh& c = *meshes.back();
       c.name = name;
-      if (!LoadObj(partsDir + "/" + name + ".obj", c.clean) || !LoadTruth(partsDir + "/" + name + ".truth", c)) {
+      if (!LoadMesh(partsDir + "/" + name + ".obj", c.clean) || !LoadTruth(partsDir + "/" + name + ".truth", c)) {
         std::fprintf(stderr, "cad: cannot read %s/%s.obj / .truth\n", partsDir.c_str(), name.c_str());
         return 2;
       }
@@ -231,7 +200,7 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
     const std::string abc = std::string(NVV_SHARED_MESHES) + "/real/abc_00000006";
     std::unique_ptr<CadMesh> c(new CadMesh);
     c->name = "abc_00000006";
-    if (LoadObj(abc + ".obj", c->clean)) {
+    if (LoadMesh(abc + ".obj", c->clean)) {
       c->sharp = TruthFromFea(abc + ".fea", c->clean.vert.size());
       c->point.assign(c->clean.vert.size(), PointTruth());
       meshes.push_back(std::move(c));

@@ -6,7 +6,6 @@
 #define NVV_BENCH_CREASE_SHAPES_H
 
 #include <cmath>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -108,20 +107,6 @@ inline F1 ScoreFeatures(const std::vector<char>& found, const std::vector<char>&
   r.recall = tp + fn > 0 ? tp / (tp + fn) : 1;
   r.f1 = r.precision + r.recall > 0 ? 2 * r.precision * r.recall / (r.precision + r.recall) : 0;
   return r;
-}
-
-// The crease vertices of an ABC-style feature file (.fea): an edge count, then vertex pairs.
-inline std::vector<char> TruthFromFea(const std::string& path, std::size_t n) {
-  std::vector<char> t(n, 0);
-  std::ifstream in(path);
-  int count = 0;
-  in >> count;
-  for (int i = 0; i < count; ++i) {
-    int a, b;
-    in >> a >> b;
-    if (a >= 0 && b >= 0 && std::size_t(a) < n && std::size_t(b) < n) t[a] = t[b] = 1;
-  }
-  return t;
 }
 
 }  // namespace nvv_bench

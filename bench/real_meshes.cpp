@@ -14,6 +14,7 @@
 
 #include "crease_shapes.h"
 #include "estimators.h"
+#include "mesh_files.h"
 #include "report.h"
 #include "sections.h"
 
@@ -23,52 +24,6 @@
 
 namespace nvv_bench {
 namespace {
-
-// Minimal OFF / OBJ reader: vertices and triangles only.
-bool LoadMesh(const std::string& path, TMesh& m) {
-  std::ifstream in(path);
-  if (!in) return false;
-  std::vector<vcg::Point3d> v;
-  std::vector<std::array<int, 3>> f;
-  const bool off = path.size() > 4 && path.substr(path.size() - 4) == ".off";
-  if (off) {
-    std::string head;
-    int nv, nf, ne;
-    in >> head >> nv >> nf >> ne;
-    v.resize(nv);
-    for (auto& p : v) in >> p[0] >> p[1] >> p[2];
-    for (int i = 0; i < nf; ++i) {
-      int n, a, b, c;
-      in >> n >> a >> b >> c;
-      f.push_back({a, b, c});
-    }
-  } else {
-    std::string line;
-    while (std::getline(in, line)) {
-      std::istringstream ls(line);
-      std::string tag;
-      ls >> tag;
-      if (tag == "v") {
-        vcg::Point3d p;
-        ls >> p[0] >> p[1] >> p[2];
-        v.push_back(p);
-      } else if (tag == "f") {
-        std::array<int, 3> t;
-        for (int j = 0; j < 3; ++j) {
-          std::string s;
-          ls >> s;
-          t[j] = std::stoi(s.substr(0, s.find('/'))) - 1;
-        }
-        f.push_back(t);
-      }
-    }
-  }
-  m.Clear();
-  auto vi = vcg::tri::Allocator<TMesh>::AddVertices(m, v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) (vi + i)->P() = v[i];
-  for (const auto& t : f) vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[t[0]], &m.vert[t[1]], &m.vert[t[2]]);
-  return !v.empty() && !f.empty();
-}
 
 std::vector<char> TruthFromDihedral(const TMesh& clean, double minAngleDeg) { return DihedralCreaseVertices(clean, minAngleDeg); }
 
