@@ -17,7 +17,6 @@ using Edge = std::array<int, 2>;
 
 Edge Key(int a, int b) { return a < b ? Edge{{a, b}} : Edge{{b, a}}; }
 
-bool IsFeature(const VertexResult& r) { return r.cls == VertexClass::Crease || r.cls == VertexClass::Corner; }
 bool IsCrease(const VertexResult& r) { return r.cls == VertexClass::Crease && r.Has(kCreaseValid); }
 
 // Calls fn(a, b, f, o) once for every edge held by exactly two faces f < o.

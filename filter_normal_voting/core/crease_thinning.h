@@ -35,7 +35,6 @@
 
 namespace nvv {
 
-inline bool IsFeature(const VertexResult& r) { return r.cls == VertexClass::Crease || r.cls == VertexClass::Corner; }
 // lambda_2 + lambda_3 of the sorted eigenvalues (they sum to 1): 0 on a sheet, (1 - cos alpha) / 2
 // on a crease of normal-angle alpha with balanced sheets, 2/3 at a symmetric three-sheet corner.
 inline float FeatureStrength(const VertexResult& r) { return 1.0f - std::max(r.lambda[0], r.lambda[1]); }

@@ -55,6 +55,9 @@ struct VertexResult {
   float CornerSaliency() const { return lambda[2]; }
 };
 
+// Crease or corner: where two or more sheets meet.
+inline bool IsFeature(const VertexResult& r) { return r.cls == VertexClass::Crease || r.cls == VertexClass::Corner; }
+
 // A result's float[3] as a double vector.
 inline Eigen::Vector3d ToVec(const float* p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
 
