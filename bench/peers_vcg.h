@@ -18,6 +18,7 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include "bench_common.h"
+#include "test_support.h"
 
 namespace nvv_bench {
 
@@ -61,29 +62,9 @@ inline void VcgCurvature(const TMesh& src, VcgMethod method, double pcaRadius, d
   }
 }
 
-// vcglib's angle-weighted vertex normals (what MeshLab computes by default).
-inline std::vector<Eigen::Vector3d> AngleWeightedNormals(const TMesh& src) {
-  TMesh m;
-  vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, const_cast<TMesh&>(src));  // vcglib takes a non-const source
-  vcg::tri::UpdateNormal<TMesh>::PerVertexAngleWeighted(m);
-  vcg::tri::UpdateNormal<TMesh>::NormalizePerVertex(m);
-  std::vector<Eigen::Vector3d> n(m.vert.size());
-  for (std::size_t i = 0; i < m.vert.size(); ++i) n[i] = Eigen::Vector3d(m.vert[i].cN()[0], m.vert[i].cN()[1], m.vert[i].cN()[2]);
-  return n;
-}
-
-// Gaussian noise of standard deviation sigma along the clean mesh's angle-weighted normals
-// (the true normal on smooth parts and faces, the bisector on creases).
-inline void NoiseAlongNormals(TMesh& m, double sigma, unsigned seed) {
-  if (!(sigma > 0)) return;
-  const std::vector<Eigen::Vector3d> n = AngleWeightedNormals(m);
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> g(0, sigma);
-  for (std::size_t i = 0; i < m.vert.size(); ++i) {
-    const Eigen::Vector3d d = n[i] * g(rng);
-    m.vert[i].P() += vcg::Point3d(d.x(), d.y(), d.z());
-  }
-}
+// The noise model and the normals it follows are the tests' (tests/test_support.h).
+using nvv_test::AngleWeightedNormals;
+using nvv_test::NoiseAlongNormals;
 
 // MeshLab's "Select Crease Edges" with both thresholds at +-angleDeg; 1 for vertices of
 // selected edges.

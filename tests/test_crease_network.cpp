@@ -3,7 +3,6 @@
 // patches), clean and with 10 % (cube: also 20 %) of l_ave noise along the normals.
 #include <gtest/gtest.h>
 
-#include <random>
 #include <set>
 
 #include "core/crease_network.h"
@@ -75,15 +74,6 @@ void CappedCylinder(TMesh& m, double R, double h, int nu, int nv) {
   auto v = vcg::tri::Allocator<TMesh>::AddVertices(m, pos.size());
   for (std::size_t i = 0; i < pos.size(); ++i) v[i].P() = pos[i];
   for (const auto& f : faces) vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[f[0]], &m.vert[f[1]], &m.vert[f[2]]);
-}
-
-// Gaussian noise of `sigma` along each vertex's angle-weighted normal.
-void NoiseAlongNormals(TMesh& m, double sigma, unsigned seed) {
-  vcg::tri::UpdateNormal<TMesh>::PerVertexAngleWeighted(m);
-  vcg::tri::UpdateNormal<TMesh>::NormalizePerVertex(m);
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> gauss(0.0, sigma);
-  for (auto& v : m.vert) v.P() += v.N() * gauss(rng);
 }
 
 std::set<int> EndCorners(const nvv::CreaseNetwork& net) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include <cstring>
@@ -24,6 +25,30 @@ namespace nvv_test {
 inline void NoisySphere(TMesh& m) {
   nvv_shapes::PaperSphere(m, 31, 0.5, 4);
   nvv_shapes::AddNoise(m, 0.05 * nvv_shapes::MeanEdge(m), 3, nvv_shapes::AlongZ);
+}
+
+// vcglib's angle-weighted vertex normals (what MeshLab computes by default).
+inline std::vector<Eigen::Vector3d> AngleWeightedNormals(const TMesh& src) {
+  TMesh m;
+  vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, const_cast<TMesh&>(src));  // vcglib takes a non-const source
+  vcg::tri::UpdateNormal<TMesh>::PerVertexAngleWeighted(m);
+  vcg::tri::UpdateNormal<TMesh>::NormalizePerVertex(m);
+  std::vector<Eigen::Vector3d> n(m.vert.size());
+  for (std::size_t i = 0; i < m.vert.size(); ++i) n[i] = Eigen::Vector3d(m.vert[i].cN()[0], m.vert[i].cN()[1], m.vert[i].cN()[2]);
+  return n;
+}
+
+// Gaussian noise of standard deviation sigma along the clean mesh's angle-weighted normals
+// (the true normal on smooth parts and faces, the bisector on creases).
+inline void NoiseAlongNormals(TMesh& m, double sigma, unsigned seed) {
+  if (!(sigma > 0)) return;
+  const std::vector<Eigen::Vector3d> n = AngleWeightedNormals(m);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0, sigma);
+  for (std::size_t i = 0; i < m.vert.size(); ++i) {
+    const Eigen::Vector3d d = n[i] * g(rng);
+    m.vert[i].P() += vcg::Point3d(d.x(), d.y(), d.z());
+  }
 }
 
 inline Eigen::Vector3d E(const vcg::Point3d& p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
