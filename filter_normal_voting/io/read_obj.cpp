@@ -15,10 +15,11 @@ namespace {
 
 // The reader's state across lines: OBJ's relative indices count the vertices read so far, and a
 // positive index may refer to a vertex defined further down.
-class ObjReader {
+class ObjReader : LineFormatReader {
  public:
+  static constexpr const char* kFormat = "OBJ";
   ObjReader(const char* data, std::size_t size, MeshData& out, std::string& error, const ReadLimits& limits)
-      : lines(data, size), out(out), error(error), limits(limits) {}
+      : LineFormatReader(kFormat, data, size, out, error, limits) {}
 
   bool Read() {
     while (lines.Next(tok)) {
@@ -33,21 +34,14 @@ class ObjReader {
         ++out.skippedLines;
       }
     }
-    if (maxIndex >= 0 && std::uint64_t(maxIndex) >= out.positions.size()) {
-      error = "corrupt OBJ file: line " + std::to_string(maxIndexLine) + ": a face refers to vertex " +
-              std::to_string(maxIndex + 1) + ", but the file has " + std::to_string(out.positions.size()) + " vertices";
-      return false;
-    }
+    if (maxIndex >= 0 && std::uint64_t(maxIndex) >= out.positions.size())
+      return failAt(maxIndexLine, "a face refers to vertex " + std::to_string(maxIndex + 1) + ", but the file has " +
+                                      std::to_string(out.positions.size()) + " vertices");
     out.formatDetail = "ascii";
     return true;
   }
 
  private:
-  bool fail(const std::string& why) {
-    error = "corrupt OBJ file: line " + std::to_string(lines.Line()) + ": " + why;
-    return false;
-  }
-
   // 'v x y z [r g b [a]]'
   bool Vertex() {
     if (tok.size() < 4) return fail("a vertex needs three coordinates");
@@ -120,25 +114,16 @@ class ObjReader {
     return true;
   }
 
-  LineReader lines;
-  std::vector<Token> tok;
   std::vector<std::int64_t> corners;
   std::int64_t maxIndex = -1;  // the largest positive index used, checked once all vertices are read
   std::size_t maxIndexLine = 0;
   bool anyColor = false;
-  MeshData& out;
-  std::string& error;
-  const ReadLimits& limits;
 };
 
 }  // namespace
 
 bool ReadObj(const char* data, std::size_t size, MeshData& out, std::string& error, const ReadLimits& limits) {
-  if (OnlySpace(data, size)) {
-    error = "the OBJ file is empty";
-    return false;
-  }
-  return ObjReader(data, size, out, error, limits).Read();
+  return ReadLineFormat<ObjReader>(data, size, out, error, limits);
 }
 
 }  // namespace detail

@@ -19,19 +19,15 @@ bool HasDot(const Token& t) {
 
 // An OFF file is read in three parts: the keyword and the counts, then the vertices, then the
 // faces, each refusing what does not fit with the line it is on.
-class OffReader {
+class OffReader : LineFormatReader {
  public:
+  static constexpr const char* kFormat = "OFF";
   OffReader(const char* data, std::size_t size, MeshData& out, std::string& error, const ReadLimits& limits)
-      : lines(data, size), out(out), error(error), limits(limits) {}
+      : LineFormatReader(kFormat, data, size, out, error, limits) {}
 
   bool Read() { return Header() && Vertices() && Faces(); }
 
  private:
-  bool fail(const std::string& why) {
-    error = "corrupt OFF file: line " + std::to_string(lines.Line()) + ": " + why;
-    return false;
-  }
-
   // The keyword (its prefixes say which columns the vertices have) and the counts, checked
   // against the bytes that follow before anything is allocated.
   bool Header() {
@@ -135,23 +131,14 @@ class OffReader {
     return true;
   }
 
-  LineReader lines;
-  std::vector<Token> tok;
   bool hasNormal = false, hasColor = false, hasTex = false;
   std::int64_t nv = 0, nf = 0;
-  MeshData& out;
-  std::string& error;
-  const ReadLimits& limits;
 };
 
 }  // namespace
 
 bool ReadOff(const char* data, std::size_t size, MeshData& out, std::string& error, const ReadLimits& limits) {
-  if (OnlySpace(data, size)) {
-    error = "the OFF file is empty";
-    return false;
-  }
-  return OffReader(data, size, out, error, limits).Read();
+  return ReadLineFormat<OffReader>(data, size, out, error, limits);
 }
 
 }  // namespace detail

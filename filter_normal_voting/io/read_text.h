@@ -3,6 +3,7 @@
 #ifndef NVV_IO_READ_TEXT_H
 #define NVV_IO_READ_TEXT_H
 
+#include <string>
 #include <vector>
 
 #include "io/mesh_reader_internal.h"
@@ -63,6 +64,40 @@ inline bool OnlySpace(const char* data, std::size_t size) {
   for (std::size_t i = 0; i < size; ++i)
     if (!IsSpace(data[i])) return false;
   return true;
+}
+
+// What the line-based readers (OBJ, OFF) share: the lines and the current line's tokens, the
+// mesh they fill, where a refusal's reason goes ("corrupt <format> file: line N: why"), and the
+// limits they read within. Reader::kFormat names the format in the messages.
+class LineFormatReader {
+ protected:
+  LineFormatReader(const char* format, const char* data, std::size_t size, MeshData& out, std::string& error,
+                   const ReadLimits& limits)
+      : lines(data, size), out(out), error(error), limits(limits), format_(format) {}
+  bool fail(const std::string& why) { return failAt(lines.Line(), why); }
+  bool failAt(std::size_t line, const std::string& why) {
+    error = std::string("corrupt ") + format_ + " file: line " + std::to_string(line) + ": " + why;
+    return false;
+  }
+
+  LineReader lines;
+  std::vector<Token> tok;
+  MeshData& out;
+  std::string& error;
+  const ReadLimits& limits;
+
+ private:
+  const char* format_;
+};
+
+// Reads the bytes with Reader (a LineFormatReader), unless they hold nothing but white space.
+template <class Reader>
+bool ReadLineFormat(const char* data, std::size_t size, MeshData& out, std::string& error, const ReadLimits& limits) {
+  if (OnlySpace(data, size)) {
+    error = std::string("the ") + Reader::kFormat + " file is empty";
+    return false;
+  }
+  return Reader(data, size, out, error, limits).Read();
 }
 
 }  // namespace detail
