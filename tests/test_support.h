@@ -4,6 +4,7 @@
 #define NVV_TESTS_TEST_SUPPORT_H
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -124,6 +125,56 @@ inline double AngleDeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 // Interior of the paper's 32x32 grids: |x|, |y| <= limit (away from the boundary).
 inline bool Interior(const vcg::Point3d& p, double limit) {
   return std::abs(p[0]) <= limit && std::abs(p[1]) <= limit;
+}
+
+// Closed cylinder of radius R and height h: side grid nu x nv, caps as fans of rings.
+inline void CappedCylinder(TMesh& m, double R, double h, int nu, int nv) {
+  m.Clear();
+  const int rings = std::max(2, int(R / (2 * 3.14159265358979 * R / nu)));  // about square cells on the caps
+  std::vector<vcg::Point3d> pos;
+  std::vector<std::array<int, 3>> faces;
+  auto ringVertex = [&](int level, int i) { return level * nu + (i % nu); };
+  for (int level = 0; level <= nv; ++level)
+    for (int i = 0; i < nu; ++i) {
+      const double a = 2 * 3.14159265358979 * i / nu;
+      pos.push_back(vcg::Point3d(R * std::cos(a), R * std::sin(a), h * level / nv));
+    }
+  for (int level = 0; level < nv; ++level)
+    for (int i = 0; i < nu; ++i) {
+      const int a = ringVertex(level, i), b = ringVertex(level, i + 1), c = ringVertex(level + 1, i + 1),
+                d = ringVertex(level + 1, i);
+      faces.push_back({a, b, c});
+      faces.push_back({a, c, d});
+    }
+  for (int cap = 0; cap < 2; ++cap) {
+    const double z = cap == 0 ? 0 : h;
+    std::vector<int> outer(nu);
+    for (int i = 0; i < nu; ++i) outer[i] = ringVertex(cap == 0 ? 0 : nv, i);
+    for (int r = rings - 1; r >= 0; --r) {
+      std::vector<int> inner(nu);
+      if (r == 0) {
+        pos.push_back(vcg::Point3d(0, 0, z));
+        std::fill(inner.begin(), inner.end(), int(pos.size()) - 1);
+      } else {
+        for (int i = 0; i < nu; ++i) {
+          const double a = 2 * 3.14159265358979 * i / nu, rr = R * r / rings;
+          pos.push_back(vcg::Point3d(rr * std::cos(a), rr * std::sin(a), z));
+          inner[i] = int(pos.size()) - 1;
+        }
+      }
+      for (int i = 0; i < nu; ++i) {
+        const int a = outer[i], b = outer[(i + 1) % nu], c = inner[(i + 1) % nu], d = inner[i];
+        std::array<int, 3> t1{a, c, b}, t2{a, d, c};  // bottom cap faces down
+        if (cap == 1) t1 = {a, b, c}, t2 = {a, c, d};
+        faces.push_back(t1);
+        if (c != d) faces.push_back(t2);
+      }
+      outer = inner;
+    }
+  }
+  auto v = vcg::tri::Allocator<TMesh>::AddVertices(m, pos.size());
+  for (std::size_t i = 0; i < pos.size(); ++i) v[i].P() = pos[i];
+  for (const auto& f : faces) vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[f[0]], &m.vert[f[1]], &m.vert[f[2]]);
 }
 
 }  // namespace nvv_test

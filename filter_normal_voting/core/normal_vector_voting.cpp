@@ -7,6 +7,7 @@
 #include "crease_thinning.h"
 #include "huge_pages.h"
 #include "normal_votes.h"
+#include "sharp_edges.h"
 #include "surface_curvature.h"
 
 namespace nvv {
@@ -156,6 +157,7 @@ Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std::vector
   PassProgress ridges(cb, g.VertexCount(), share, share, "Normal vector voting: crease ridges");
   end = ThinCreases(g, p, s, threads, ridges, out, sum.thinned);
   if (end != PassEnd::Done) return Unfinished(end);
+  ClassifyCleanVerticesBySharpEdges(g, p, threads, out);
   sum.secondsPass1 = SecondsSince(t0);
 
   const auto t1 = Clock::now();

@@ -26,6 +26,9 @@ std::string ValidateParams(const Params& p) {
   if (bad(p.creaseAngleDeg) || p.creaseAngleDeg < limits::kMinAngleDeg || p.creaseAngleDeg > limits::kMaxAngleDeg)
     return "The crease angle must be between " + Number(limits::kMinAngleDeg) + " and " +
            Number(limits::kMaxAngleDeg) + " degrees (got " + Number(p.creaseAngleDeg) + ").";
+  if (bad(p.sharpEdgeAngleDeg) || p.sharpEdgeAngleDeg < 0 || p.sharpEdgeAngleDeg > limits::kMaxAngleDeg)
+    return "The sharp edge angle must be 0 (off) or up to " + Number(limits::kMaxAngleDeg) + " degrees (got " +
+           Number(p.sharpEdgeAngleDeg) + ").";
   if (bad(p.cornerAngleDeg) || p.cornerAngleDeg < limits::kMinAngleDeg || p.cornerAngleDeg > limits::kMaxAngleDeg)
     return "The corner angle must be between " + Number(limits::kMinAngleDeg) + " and " +
            Number(limits::kMaxAngleDeg) + " degrees (got " + Number(p.cornerAngleDeg) + ").";

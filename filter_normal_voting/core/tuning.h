@@ -56,6 +56,19 @@ constexpr int kGapDirectionEdges = 3;
 // on a cube loses runs of 4 edges, 1.1 g_m).
 constexpr double kGapReachOverRadius = 2.0;
 
+// --- Creases of clean tessellations (sharp_edges.h) -------------------------------------------
+
+// A vertex's one-ring is clean where this many times its median dihedral angle stays below the
+// sharp-edge angle.
+constexpr double kCleanOverNoise = 8.0;
+// The stage runs only on a mesh whose lower-quartile dihedral angle, times this, stays below the
+// sharp-edge angle (1 % noise passes, 5 % does not).
+constexpr double kCleanMeshOverNoise = 30.0;
+// An edge this many times the sharp-edge angle is sharp whatever its neighbours do ...
+constexpr double kSharpEdgeAlways = 2.0;
+// ... below that, only where it turns at least this many times more than the faces beside it.
+constexpr double kSharpEdgeIsolation = 1.5;
+
 // --- Degenerate input --------------------------------------------------------------------------
 
 // A face is degenerate (no normal, no vote) when its area is below this times l_ave^2: a

@@ -64,6 +64,7 @@ std::vector<OptionCase> Cases() {
     {"absolute_radius", {"--absolute_radius", "0.45"}, {}, [](O& o) { o.core.absoluteRadius = 0.45; }, true},
     {"crease_angle", {"--crease_angle", "20"}, {}, [](O& o) { o.core.creaseAngleDeg = 20; }, true},
     {"corner_angle", {"--corner_angle", "30"}, {}, [](O& o) { o.core.cornerAngleDeg = 30; }, true},
+    {"sharp_edge_angle", {"--sharp_edge_angle", "20"}, {}, [](O& o) { o.core.sharpEdgeAngleDeg = 20; }, true},
     // The quadric fit already leaves out neighbours across a crease; the paper's Taubin votes
     // show whether the march stops there.
     {"stop_at_creases", {"--curvature_fit", "taubin", "--stop_at_creases", "false"}, {"--curvature_fit", "taubin"},

@@ -76,6 +76,14 @@ def check_corner_angle(base):
     assert count(run(corner_angle=10), CORNER) > count(base, CORNER) + 10
 
 
+def check_sharp_edge_angle(base):
+    # A clean 25 deg roof: below the 60 deg crease angle for the votes, sharp for its edges.
+    votes = run(roof(alpha_deg=25.0))
+    sharp = run(roof(alpha_deg=25.0), sharp_edge_angle=20)
+    assert count(sharp, CREASE, CORNER) == 33  # the ridge, and only the ridge
+    assert count(votes, CREASE, CORNER) < 16
+
+
 def check_stop_at_creases(base):
     assert quality_diff(run(curvature_fit=1), run(curvature_fit=1, stop_at_creases=False)) > 1e-3
 

@@ -1,0 +1,129 @@
+// Creases of clean tessellations from their sharp edges (core/sharp_edges.h): exact where the
+// mesh is clean, whatever the votes say; no effect where it is noisy.
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+using namespace nvv_test;
+
+namespace {
+
+nvv::Params SharpEdges(double angleDeg) {
+  nvv::Params p = WithK(3);
+  p.sharpEdgeAngleDeg = angleDeg;
+  return p;
+}
+
+std::vector<char> Features(const NvvRun& r) {
+  std::vector<char> f(r.res.size(), 0);
+  for (std::size_t i = 0; i < r.res.size(); ++i) f[i] = nvv::IsFeature(r.res[i]);
+  return f;
+}
+
+// A tent: two planes meeting along the y axis at a normal-angle alpha, on a grid of n x n cells.
+void Tent(TMesh& m, double alphaDeg, int n) {
+  m.Clear();
+  const double slope = std::tan(alphaDeg / 2 * 3.14159265358979 / 180);
+  auto v = vcg::tri::Allocator<TMesh>::AddVertices(m, (n + 1) * (n + 1));
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = i - n / 2.0, y = j;
+      v[j * (n + 1) + i].P() = vcg::Point3d(x, y, -slope * std::abs(x));
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[b], &m.vert[c]);
+      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[c], &m.vert[d]);
+    }
+}
+
+}  // namespace
+
+// A 25 deg crease is below the default crease angle of 60 deg, so the votes do not call it one;
+// but its edges are sharp on a clean mesh: at a sharp-edge angle of 20 deg every vertex on the
+// ridge and no other is a crease; at 30 deg none is, the votes' few included.
+TEST(SharpEdges, ACleanShallowCreaseIsFoundExactlyOnItsRidge) {
+  TMesh m;
+  Tent(m, 25, 20);
+  const NvvRun votes = RunNvv(m, SharpEdges(0));
+  const NvvRun sharp = RunNvv(m, SharpEdges(20));
+  ASSERT_TRUE(sharp.st.ok) << sharp.st.message;
+  int onRidge = 0, ridgeFound = 0, offRidgeFound = 0, votesFound = 0;
+  for (std::size_t i = 0; i < m.vert.size(); ++i) {
+    const bool ridge = m.vert[i].P()[0] == 0;
+    onRidge += ridge;
+    ridgeFound += ridge && nvv::IsFeature(sharp.res[i]);
+    offRidgeFound += !ridge && nvv::IsFeature(sharp.res[i]);
+    votesFound += nvv::IsFeature(votes.res[i]);
+  }
+  EXPECT_EQ(onRidge, ridgeFound);
+  EXPECT_EQ(0, offRidgeFound);
+  EXPECT_LT(votesFound, onRidge / 2);  // what the sharp edges add
+  // Interior ridge vertices are creases along y with the crease's normal-angle as cusp angle.
+  for (std::size_t i = 0; i < m.vert.size(); ++i) {
+    const auto& p = m.vert[i].P();
+    if (p[0] != 0 || p[1] < 1 || p[1] > 19) continue;
+    ASSERT_EQ(nvv::VertexClass::Crease, sharp.res[i].cls) << "y " << p[1];
+    EXPECT_GT(std::abs(sharp.res[i].creaseTangent[1]), 0.999);
+    EXPECT_NEAR(25.0, sharp.res[i].cuspAngle * 180 / 3.14159265358979, 0.01);
+  }
+  const NvvRun none = RunNvv(m, SharpEdges(30));
+  for (std::size_t i = 0; i < m.vert.size(); ++i) EXPECT_FALSE(nvv::IsFeature(none.res[i]));
+}
+
+// A cylinder of 16 facets turns by 22.5 deg at every facet line: above the sharp-edge angle, but
+// not isolated, so no facet line is a crease; its rims (90 deg between side and caps) are, with
+// every rim vertex found and nothing else.
+TEST(SharpEdges, TessellatedCurvatureIsNotACreaseButTheRimsAre) {
+  TMesh m;
+  CappedCylinder(m, 5.0, 10.0, 16, 20);
+  const NvvRun r = RunNvv(m, SharpEdges(20));
+  ASSERT_TRUE(r.st.ok) << r.st.message;
+  int rim = 0, rimFound = 0, others = 0;
+  for (std::size_t i = 0; i < m.vert.size(); ++i) {
+    const auto& p = m.vert[i].P();
+    const bool onRim = (p[2] == 0 || p[2] == 10) && std::abs(std::hypot(p[0], p[1]) - 5) < 1e-9;
+    rim += onRim;
+    rimFound += onRim && nvv::IsFeature(r.res[i]);
+    others += !onRim && nvv::IsFeature(r.res[i]);
+  }
+  EXPECT_EQ(32, rim);
+  EXPECT_EQ(rim, rimFound);
+  EXPECT_EQ(0, others);
+}
+
+// A cube's twelve edges on a clean grid: every edge vertex is a feature, the eight corners are
+// corners, nothing else is marked.
+TEST(SharpEdges, ACleanCubeIsExactlyItsEdgesAndCorners) {
+  TMesh m;
+  nvv_shapes::Cube(m, 5.0, 21);
+  const NvvRun r = RunNvv(m, SharpEdges(20));
+  int wrong = 0, corners = 0;
+  for (std::size_t i = 0; i < m.vert.size(); ++i) {
+    const auto& p = m.vert[i].P();
+    int extreme = 0;
+    for (int j = 0; j < 3; ++j) extreme += std::abs(std::abs(p[j]) - 5) < 1e-9;
+    wrong += (extreme >= 2) != nvv::IsFeature(r.res[i]);
+    if (extreme == 3) corners += r.res[i].cls == nvv::VertexClass::Corner;
+  }
+  EXPECT_EQ(0, wrong);
+  EXPECT_EQ(8, corners);
+}
+
+// Under 5 % noise and more the mesh is not clean: the votes decide alone, to the bit; on a clean
+// mesh the result does not depend on the thread count.
+TEST(SharpEdges, NoisyMeshesAreLeftToTheVotesAndResultsDoNotDependOnThreads) {
+  for (double noise : {0.05, 0.1, 0.2}) {
+    TMesh m;
+    nvv_shapes::Cube(m, 5.0, 21);
+    NoiseAlongNormals(m, noise * 0.5, 3);  // l_ave = 0.5
+    EXPECT_TRUE(SameBits(RunNvv(m, SharpEdges(0)).res, RunNvv(m, SharpEdges(20)).res)) << "noise " << noise;
+  }
+  TMesh m;
+  CappedCylinder(m, 5.0, 10.0, 16, 20);
+  nvv::Params one = SharpEdges(20), two = SharpEdges(20);
+  one.threads = 1;
+  two.threads = 2;
+  EXPECT_TRUE(SameBits(RunNvv(m, one).res, RunNvv(m, two).res));
+}
