@@ -80,6 +80,7 @@ void ClassifyRoof(double alpha, double phi, nvv::ClassRule rule, VertexClass& ri
   TMesh m;
   nvv_shapes::Roof(m, alpha);
   nvv::Params p = WithK(3.0);
+  p.sharpEdgeAngleDeg = 0;  // the votes' classes (a clean roof's sharp edges would decide otherwise)
   p.creaseAngleDeg = phi;
   p.classRule = rule;
   const NvvRun r = RunNvv(m, p);
@@ -231,6 +232,7 @@ TEST(Pass1Classes, ThinningKeepsOnlyTheRidge) {
       nvv_shapes::AddNoise(m, noise * nvv_shapes::MeanEdge(m), 11, nvv_shapes::AlongZ);
       nvv::Params p = WithK(5.0);
       p.creaseAngleDeg = alpha / 2;
+      p.sharpEdgeAngleDeg = 0;  // thinning the votes' band (the clean roof's sharp edges need none)
       int ridge = 0, ridgeCrease = 0, offRidgeThin = 0, offRidgePaper = 0, badNormal = 0, noCurvature = 0;
       p.thinCreases = false;
       const NvvRun paper = RunNvv(m, p);

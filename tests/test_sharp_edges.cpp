@@ -41,13 +41,13 @@ void Tent(TMesh& m, double alphaDeg, int n) {
 }  // namespace
 
 // A 25 deg crease is below the default crease angle of 60 deg, so the votes do not call it one;
-// but its edges are sharp on a clean mesh: at a sharp-edge angle of 20 deg every vertex on the
-// ridge and no other is a crease; at 30 deg none is, the votes' few included.
+// but its edges are sharp on a clean mesh: at the default sharp-edge angle (10 deg) every vertex
+// on the ridge and no other is a crease; at 30 deg none is, the votes' few included.
 TEST(SharpEdges, ACleanShallowCreaseIsFoundExactlyOnItsRidge) {
   TMesh m;
   Tent(m, 25, 20);
   const NvvRun votes = RunNvv(m, SharpEdges(0));
-  const NvvRun sharp = RunNvv(m, SharpEdges(20));
+  const NvvRun sharp = RunNvv(m, WithK(3));
   ASSERT_TRUE(sharp.st.ok) << sharp.st.message;
   int onRidge = 0, ridgeFound = 0, offRidgeFound = 0, votesFound = 0;
   for (std::size_t i = 0; i < m.vert.size(); ++i) {
@@ -78,7 +78,7 @@ TEST(SharpEdges, ACleanShallowCreaseIsFoundExactlyOnItsRidge) {
 TEST(SharpEdges, TessellatedCurvatureIsNotACreaseButTheRimsAre) {
   TMesh m;
   CappedCylinder(m, 5.0, 10.0, 16, 20);
-  const NvvRun r = RunNvv(m, SharpEdges(20));
+  const NvvRun r = RunNvv(m, SharpEdges(nvv::Params().sharpEdgeAngleDeg));
   ASSERT_TRUE(r.st.ok) << r.st.message;
   int rim = 0, rimFound = 0, others = 0;
   for (std::size_t i = 0; i < m.vert.size(); ++i) {
@@ -98,7 +98,7 @@ TEST(SharpEdges, TessellatedCurvatureIsNotACreaseButTheRimsAre) {
 TEST(SharpEdges, ACleanCubeIsExactlyItsEdgesAndCorners) {
   TMesh m;
   nvv_shapes::Cube(m, 5.0, 21);
-  const NvvRun r = RunNvv(m, SharpEdges(20));
+  const NvvRun r = RunNvv(m, SharpEdges(nvv::Params().sharpEdgeAngleDeg));
   int wrong = 0, corners = 0;
   for (std::size_t i = 0; i < m.vert.size(); ++i) {
     const auto& p = m.vert[i].P();
@@ -118,11 +118,11 @@ TEST(SharpEdges, NoisyMeshesAreLeftToTheVotesAndResultsDoNotDependOnThreads) {
     TMesh m;
     nvv_shapes::Cube(m, 5.0, 21);
     NoiseAlongNormals(m, noise * 0.5, 3);  // l_ave = 0.5
-    EXPECT_TRUE(SameBits(RunNvv(m, SharpEdges(0)).res, RunNvv(m, SharpEdges(20)).res)) << "noise " << noise;
+    EXPECT_TRUE(SameBits(RunNvv(m, SharpEdges(0)).res, RunNvv(m, SharpEdges(nvv::Params().sharpEdgeAngleDeg)).res)) << "noise " << noise;
   }
   TMesh m;
   CappedCylinder(m, 5.0, 10.0, 16, 20);
-  nvv::Params one = SharpEdges(20), two = SharpEdges(20);
+  nvv::Params one = SharpEdges(nvv::Params().sharpEdgeAngleDeg), two = SharpEdges(nvv::Params().sharpEdgeAngleDeg);
   one.threads = 1;
   two.threads = 2;
   EXPECT_TRUE(SameBits(RunNvv(m, one).res, RunNvv(m, two).res));

@@ -61,11 +61,11 @@ struct Params {
   //  - the quadric fit's sample weights: a neighbour whose normal is phi or more off v's gets no
   //    weight (sheet_fit.cpp, SampleInFrame).
   double creaseAngleDeg = 60.0;
-  // Where a vertex's one-ring is clean (a CAD export), its class comes from its mesh edges whose
-  // dihedral angle is at least this and stands out from the faces around (sharp_edges.h), not from
-  // the votes; 0 (the default for now): the votes everywhere, as in the paper. docs/accuracy.md's
-  // CAD section measures 20 deg.
-  double sharpEdgeAngleDeg = 0.0;
+  // On a clean mesh (a CAD export) every class comes from the mesh edges whose dihedral angle is at
+  // least this (capped by the crease angle) and that stand out from the lines beside them
+  // (sharp_edges.h), not from the votes; 0: the votes everywhere, as in the paper. Noisy meshes
+  // are not affected. docs/accuracy.md's CAD section measures both.
+  double sharpEdgeAngleDeg = 10.0;
   double cornerAngleDeg = 60.0; // psi: the same for the third direction (corners)
   bool stopAtCreases = true;    // pass 2 does not march through non-surface vertices (par. 6.5)
   bool thinCreases = true;      // keep only the ridge of each crease band (crease_thinning.h); paper: false

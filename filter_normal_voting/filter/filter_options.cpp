@@ -30,12 +30,12 @@ std::vector<ParamSpec> AlgorithmParameters() {
      "vertex is a corner (the paper's eta). Between 1 and 89 degrees.",
      60.0, limits::kMinAngleDeg, limits::kMaxAngleDeg, {}, {}, false},
     {"sharp_edge_angle", ParamType::Float, "Sharp edge angle on clean meshes (deg)",
-     "Where a vertex's faces are free of noise (a CAD export), its class comes from its mesh edges instead "
-     "of the votes: an edge whose faces' normals are at least this far apart (and at most the crease angle) "
-     "and that turns more than the faces beside it is a crease edge, so every vertex of a crease is found "
-     "however close two creases run. Noisy meshes are not affected. 0: the votes everywhere (the paper). "
-     "20 deg finds the creases of clean CAD exports (docs/accuracy.md, CAD parts).",
-     0.0, 0.0, limits::kMaxAngleDeg, {}, {}, false},
+     "On a mesh free of noise (a CAD export) the classes come from the mesh edges instead of the votes: an "
+     "edge whose faces' normals are at least this far apart (and the crease angle, if lower) and that turns "
+     "more than the lines beside it (a curved face cut into strips turns at every strip) is a crease edge, "
+     "so every vertex of a crease is found however close two creases run. Noisy meshes are not affected. "
+     "0: the votes everywhere (the paper).",
+     10.0, 0.0, limits::kMaxAngleDeg, {}, {}, false},
     {"stop_at_creases", ParamType::Bool, "Stop curvature at creases",
      "When estimating curvature, do not let a neighbourhood grow across crease and corner vertices, "
      "so each side of an edge keeps its own curvature. Matters most for the Taubin and Euler estimators: "
