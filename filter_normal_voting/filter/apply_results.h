@@ -209,7 +209,7 @@ class ApplyResults {
   }
 
   // The crease edges become the faces' edge selection (vcglib's FaceEdgeS, what MeshLab's
-  // "Select crease edges" sets), replacing any earlier one; both faces of an edge carry it.
+  // "Select Crease Edges" sets), replacing any earlier one; both faces of an edge carry it.
   static void CreaseEdgeSelection(MeshType& m, const CreaseOutputs& c) {
     const auto* base = m.vert.empty() ? nullptr : &m.vert[0];
     for (std::size_t s = 0; s < m.face.size(); ++s) {

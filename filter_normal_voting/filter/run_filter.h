@@ -39,7 +39,7 @@ struct RunOutcome {
   std::string error;                 // why it failed, one sentence
   bool meshChanged = false;          // false whenever failure is kRefused or kCancelled
   Summary summary;
-  std::vector<std::string> log;      // the summary line and the settings line
+  std::vector<std::string> log;      // the summary line, the settings line, the crease network's line
   std::vector<std::string> warnings; // about the input, one sentence each
   bool creaseNetwork = false;        // crease holds the run's crease network
   CreaseOutputs crease;
