@@ -173,3 +173,16 @@ TEST(CliCreaseNetwork, ALinesFileOfAnotherKindIsRefused) {
   EXPECT_EQ(2, r.exitCode);
   EXPECT_NE(std::string::npos, r.err.find(".obj or .ply")) << r.err;
 }
+
+TEST(CliCreaseNetwork, AnUnwritableLinesFileIsRefusedBeforeAnyWork) {
+  nvv_test::TMesh m;
+  nvv_shapes::Cube(m, 5.0, 5);
+  TempDir dir;
+  const std::string input = dir.File("in.ply");
+  ASSERT_EQ(0, vcg::tri::io::ExporterPLY<nvv_test::TMesh>::Save(m, input.c_str(), 0, true));
+  const CliResult r = RunCli({"--crease_lines", "/nonexistent/dir/lines.obj", input, dir.File("out.ply")}, dir);
+  EXPECT_EQ(5, r.exitCode);
+  EXPECT_NE(std::string::npos, r.err.find("cannot write the crease lines")) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_FALSE(std::ifstream(dir.File("out.ply")).good());
+}
