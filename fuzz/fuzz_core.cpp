@@ -1,14 +1,16 @@
 // libFuzzer target over mesh + parameters: the bytes choose the parameters (through the same
 // table the filter's dialog uses, so out-of-range values are refused there as in MeshLab), then
 // vertices (raw floats: NaN, inf, huge, tiny, duplicates) and faces (raw indices, possibly out
-// of range or repeated). The core runs and, when it succeeds, the results are written onto the
-// mesh, as the MeshLab adapter does. Any crash, sanitizer report or hang is a finding.
+// of range or repeated). The core runs and, when it succeeds, the crease network is found and the
+// results are written onto the mesh, as the run sequence does. Any crash, sanitizer report or
+// hang is a finding.
 #include <cstdint>
 #include <cstring>
 #include <vector>
 
 #include "../tests/test_mesh.h"
 #include "filter/apply_results.h"
+#include "filter/crease_outputs.h"
 #include "core/normal_vector_voting.h"
 
 namespace {
@@ -57,7 +59,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   std::vector<nvv::VertexResult> res;
   nvv::Summary sum;
-  const nvv::Status st = vcg::tri::NormalVectorVoting<nvv_test::TMesh>::Compute(m, o.core, res, sum);
-  if (st.ok) nvv::ApplyResults<nvv_test::TMesh>::Apply(m, res, o);
+  nvv::SurfaceGraph g;
+  const nvv::Status st = vcg::tri::NormalVectorVoting<nvv_test::TMesh>::Compute(m, o.core, res, sum, g);
+  if (!st.ok) return 0;
+  const nvv::CreaseOutputs crease = nvv::FindCreaseOutputs(m, g, res, sum, o.core.creaseAngleDeg);
+  nvv::ApplyResults<nvv_test::TMesh>::Apply(m, res, o, &crease);
   return 0;
 }

@@ -86,7 +86,8 @@ inline int Run(int argc, char** argv, std::string& input) {
   std::string error;
   if (!LoadMesh(a.input, m, info, error)) return Fail(kBadInput, a.input + ": " + error);
   // Refuse an unwritable destination before anything is printed or computed.
-  const std::string unwritable = nvv::CheckOutputPath(a.output);
+  std::string unwritable = nvv::CheckOutputPath(a.output);
+  if (unwritable.empty() && !a.creaseLines.empty()) unwritable = nvv::CheckOutputPath(a.creaseLines, "the crease lines");
   if (!unwritable.empty()) return Fail(kCannotWrite, unwritable);
   if (!a.quiet) {
     std::printf("input: %s (%s, %d vertices, %d faces%s)\n", a.input.c_str(), info.format.c_str(), m.vn, m.fn,
@@ -103,6 +104,7 @@ inline int Run(int argc, char** argv, std::string& input) {
   request.resultPly = a.output;
   request.binaryPly = !a.ascii;
   request.plyComments = HeaderComments(a);
+  request.creaseLines = a.creaseLines;
   const nvv::RunOutcome run = nvv::RunFilter(m, request, progress);
   terminal.Finish();
   switch (run.failure) {
@@ -112,8 +114,10 @@ inline int Run(int argc, char** argv, std::string& input) {
   }
   if (!a.quiet) {
     std::printf("%s\n", run.log.front().c_str());
+    if (run.creaseNetwork) std::printf("%s\n", nvv::CreaseNetworkLine(run.crease).c_str());
     for (const auto& w : run.warnings) std::printf("warning: %s\n", w.c_str());
     std::printf("output: %s (%s)\n", a.output.c_str(), a.ascii ? "ascii" : "binary_little_endian");
+    if (!a.creaseLines.empty()) std::printf("crease lines: %s\n", a.creaseLines.c_str());
   }
   return kOk;
 }

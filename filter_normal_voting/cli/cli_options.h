@@ -24,6 +24,7 @@ struct CliArgs {
   bool version = false;
   int threads = 0;  // 0: all cores
   std::string input, output;
+  std::string creaseLines;  // --crease_lines: empty, or a .obj / .ply file
 };
 
 inline std::string Lower(std::string s) {
@@ -138,6 +139,14 @@ inline std::string ParseArgs(int argc, const char* const* argv, CliArgs& a) {
       if (!ParseNumber(text, v) || v != std::floor(v) || v < 0 || v > 4096)
         return "invalid value '" + text + "' for --threads: expected an integer from 0 (all cores) to 4096";
       a.threads = int(v);
+      continue;
+    }
+    if (name == "crease_lines") {
+      if (!takeValue(a.creaseLines)) return "option --crease_lines needs a value";
+      const std::string lower = Lower(a.creaseLines);
+      const std::string ext = lower.size() >= 4 ? lower.substr(lower.size() - 4) : std::string();
+      if (ext != ".obj" && ext != ".ply")
+        return "the crease lines file name must end in .obj or .ply (got '" + a.creaseLines + "')";
       continue;
     }
     const nvv::ParamSpec* spec = nvv::FindParam(name);

@@ -81,12 +81,16 @@ inline std::string HelpText() {
   s += "\n";
   s += Wrap("When INPUT has no vertex normals they are computed angle-weighted, as MeshLab does on "
             "loading; corner and unclassified vertices keep them. A summary (vertices per class, "
-            "curvature ranges, neighbourhood radius, time, warnings about the input) is printed on "
+            "curvature ranges, neighbourhood radius, time, warnings about the input; with the crease "
+            "network its edges, lines, the corners at their ends and the patches' count and sizes) is printed on "
             "standard output. Progress is shown on standard error when it is a terminal.", 2);
   s += "\nOPTIONS\n";
   s += Wrap("Algorithm and output options (each also accepts --name=value):", 2) + "\n";
   for (const auto& p : nvv::FilterParameterTable()) s += OptionEntry(p);
   s += "  --ascii\n" + Wrap("Write an ASCII PLY instead of binary_little_endian.", 6) + "\n";
+  s += "  --crease_lines FILE\n" + Wrap("Also write the crease lines as polylines: FILE.obj (one 'l' record "
+                                       "per line) or FILE.ply (ascii, an edge element with each edge's line). "
+                                       "Finds the crease network even with --crease_edges false.", 6) + "\n";
   s += "  --threads INT\n" + Wrap("Number of threads; 0 (the default) uses every core. The results "
                                   "are the same for any number of threads.", 6) + "\n";
   s += "  --quiet\n" + Wrap("Print nothing but errors: no summary, no progress.", 6) + "\n";
@@ -114,6 +118,12 @@ inline std::string HelpText() {
        "    nvv_flags        uchar  1 normal valid, 2 curvature valid, 4 crease values\n"
        "                            valid, 8 neighbourhood truncated at the cap\n"
        "    nvv_selected     uchar  1 if selected by --selection, else 0\n";
+  s += Wrap("With the crease network (--crease_edges true, the default) each face also has 'property "
+            "int patch', its smooth patch (-1: a face the filter skipped), and an element 'edge' "
+            "follows the faces, one record per crease edge:", 2);
+  s += "    vertex1 vertex2  int    the edge's vertices, vertex1 < vertex2\n"
+       "    cusp_angle       float  angle between the two sheets' normals, radians\n"
+       "    line             int    the crease line the edge belongs to\n";
   s += Wrap("Curvature values are 0 where the flags say they are not valid. Vertices keep the "
             "input's order (STL: the order after welding).", 2);
   s += "\nEXIT STATUS\n"

@@ -57,9 +57,15 @@ class NormalVectorVoting {
  public:
   static nvv::Status Compute(const MeshType& m, const nvv::Params& p, std::vector<nvv::VertexResult>& res,
                              nvv::Summary& sum, const nvv::Progress& cb = nvv::Progress()) {
+    nvv::SurfaceGraph g;
+    return Compute(m, p, res, sum, g, cb);
+  }
+  // The same, keeping the working copy in g for what reads the mesh's edges and faces after the
+  // run (the crease network, crease_network.h).
+  static nvv::Status Compute(const MeshType& m, const nvv::Params& p, std::vector<nvv::VertexResult>& res,
+                             nvv::Summary& sum, nvv::SurfaceGraph& g, const nvv::Progress& cb = nvv::Progress()) {
     // An absurd thread count is refused by the run below; until then the graph must not try it.
     const int graphThreads = nvv::ValidateParams(p).empty() ? p.threads : 1;
-    nvv::SurfaceGraph g;
     nvv::BuildSurfaceGraph(m, g, graphThreads);
     return nvv::RunNormalVectorVoting(g, p, res, sum, cb);
   }

@@ -1,5 +1,6 @@
 // Writes Normal Vector Voting results onto a vcglib mesh: normals, quality, colour, selection,
-// curvature directions (PD1/PD2, K1/K2) and named per-vertex attributes. Shared by both MeshLab
+// curvature directions (PD1/PD2, K1/K2) and named per-vertex attributes, and from the crease
+// network the faces' edge selection, patch attribute and patch colours. Shared by both MeshLab
 // plugin APIs and the command-line tool, so each output means the same everywhere.
 //
 // Conventions (documented in README.md):
@@ -19,6 +20,7 @@
 
 #include <vcg/complex/complex.h>
 
+#include "filter/crease_outputs.h"
 #include "filter/filter_options.h"
 #include "core/vertex_result.h"
 
@@ -33,6 +35,7 @@ struct AttributeNames {
   static const char* CuspAngle() { return "nvv_cusp_angle"; }            // degrees
   static const char* CreaseCurvature() { return "nvv_crease_curvature"; }
   static const char* CreaseTangent() { return "nvv_crease_tangent"; }    // Point3
+  static const char* Patch() { return "nvv_patch"; }                     // per face; -1: no patch
 };
 
 // The quality value of one vertex; `valid` false when it has none for this mode.
@@ -89,18 +92,22 @@ class ApplyResults {
   // What the mesh must offer for the chosen options; the adapter enables it (MeshLab:
   // updateDataMask) before calling Apply.
   struct Needs {
-    bool quality = false, color = false, curvatureDir = false;
+    bool quality = false, color = false, curvatureDir = false, faceColor = false;
   };
   static Needs NeedsFor(const FilterOptions& o) {
     Needs n;
     n.quality = o.quality != QualityMode::Keep || o.color == ColorMode::QualityRamp;
     n.color = o.color != ColorMode::Keep;
     n.curvatureDir = true;
+    n.faceColor = o.color == ColorMode::Patches;
     return n;
   }
 
-  // Writes everything the options ask for. The mesh's optional components must exist.
-  static void Apply(MeshType& m, const std::vector<VertexResult>& res, const FilterOptions& o) {
+  // Writes everything the options ask for. The mesh's optional components must exist. crease:
+  // the run's crease network, when WantsCreaseNetwork(o); without it nothing per face is written
+  // and patch colours are left out.
+  static void Apply(MeshType& m, const std::vector<VertexResult>& res, const FilterOptions& o,
+                    const CreaseOutputs* crease = nullptr) {
     if (o.updateNormals && vcg::tri::HasPerVertexNormal(m)) Normals(m, res);
     const QualityMode qmode = o.quality == QualityMode::Keep && o.color == ColorMode::QualityRamp
                                   ? QualityMode::MeanCurvature : o.quality;
@@ -110,6 +117,10 @@ class ApplyResults {
     if (o.selection != SelectionMode::None) Selection(m, res, o.selection);
     if (vcg::tri::HasPerVertexCurvatureDir(m)) CurvatureDir(m, res);
     Attributes(m, res);
+    if (!crease) return;
+    if (o.creaseEdges && vcg::tri::HasPerFaceFlags(m)) CreaseEdgeSelection(m, *crease);
+    PatchAttribute(m, *crease);
+    if (o.color == ColorMode::Patches) PatchColors(m, res, *crease);
   }
 
   // Estimated normals where there is one; elsewhere (corners, unclassified) the mesh's own normal
@@ -194,6 +205,56 @@ class ApplyResults {
       cusp[i] = ScalarType(r.Has(kCreaseValid) ? RadToDeg(r.cuspAngle) : 0.0);
       ck[i] = ScalarType(r.Has(kCreaseValid) ? r.creaseCurvature : 0.0f);
       tan[i] = r.Has(kCreaseValid) ? ToCoord(r.creaseTangent) : CoordType(0, 0, 0);
+    }
+  }
+
+  // The crease edges become the faces' edge selection (vcglib's FaceEdgeS, what MeshLab's
+  // "Select Crease Edges" sets), replacing any earlier one; both faces of an edge carry it.
+  static void CreaseEdgeSelection(MeshType& m, const CreaseOutputs& c) {
+    const auto* base = m.vert.empty() ? nullptr : &m.vert[0];
+    for (std::size_t s = 0; s < m.face.size(); ++s) {
+      auto& f = m.face[s];
+      if (f.IsD()) continue;
+      for (int j = 0; j < 3; ++j) f.ClearFaceEdgeS(j);
+      if (c.meshFacePatch[s] < 0) continue;  // not in the network's graph
+      for (int j = 0; j < 3; ++j) {
+        const int a = int(f.cV(j) - base), b = int(f.cV((j + 1) % 3) - base);
+        if (c.EdgeIndex(a, b) >= 0) f.SetFaceEdgeS(j);
+      }
+    }
+  }
+  static void PatchAttribute(MeshType& m, const CreaseOutputs& c) {
+    auto patch = vcg::tri::Allocator<MeshType>::template GetPerFaceAttribute<ScalarType>(m, AttributeNames::Patch());
+    for (std::size_t s = 0; s < m.face.size(); ++s) patch[s] = ScalarType(c.meshFacePatch[s]);
+  }
+  // One colour per patch; a vertex takes its faces' patch colour when they all lie in one patch,
+  // else (on a line) the crease or corner colour; faces and vertices outside every patch the
+  // unclassified colour.
+  static vcg::Color4b PatchColor(int patch, int count) {
+    return patch < 0 ? ClassColor(VertexClass::Invalid) : vcg::Color4b::Scatter(count, patch, 0.55f, 0.95f);
+  }
+  static void PatchColors(MeshType& m, const std::vector<VertexResult>& res, const CreaseOutputs& c) {
+    const int count = c.net.patchCount;
+    const auto* base = m.vert.empty() ? nullptr : &m.vert[0];
+    const int kNone = -1, kSeveral = -2;
+    std::vector<int> vertexPatch(m.vert.size(), kNone);
+    for (std::size_t s = 0; s < m.face.size(); ++s) {
+      const int p = c.meshFacePatch[s];
+      if (m.face[s].IsD() || p < 0) continue;
+      for (int j = 0; j < 3; ++j) {
+        int& vp = vertexPatch[m.face[s].cV(j) - base];
+        vp = vp == kNone || vp == p ? p : kSeveral;
+      }
+    }
+    if (vcg::tri::HasPerFaceColor(m))
+      for (std::size_t s = 0; s < m.face.size(); ++s)
+        if (!m.face[s].IsD()) m.face[s].C() = PatchColor(c.meshFacePatch[s], count);
+    if (!vcg::tri::HasPerVertexColor(m)) return;
+    for (std::size_t i = 0; i < m.vert.size(); ++i) {
+      if (m.vert[i].IsD()) continue;
+      const int p = vertexPatch[i];
+      m.vert[i].C() = p != kSeveral ? PatchColor(p, count)
+                                    : ClassColor(res[i].cls == VertexClass::Corner ? VertexClass::Corner : VertexClass::Crease);
     }
   }
 

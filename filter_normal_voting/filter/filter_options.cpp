@@ -91,8 +91,10 @@ std::vector<ParamSpec> OutputParameters() {
      false},
     {"color", ParamType::Enum, "Vertex colour",
      "Class colours: surface grey, crease red, corner blue, unclassified magenta. Quality ramp: the "
-     "chosen quality as a red-to-blue ramp clamped at percentiles. Keep: leave colours alone.",
-     0.0, 0, 2, {"Class colours", "Quality ramp", "Keep"}, {"classes", "ramp", "keep"}, false},
+     "chosen quality as a red-to-blue ramp clamped at percentiles. Keep: leave colours alone. Patches: "
+     "one colour per smooth patch bounded by the crease lines, on the faces (where the mesh has face "
+     "colours) and on the vertices inside a patch; vertices on the lines in crease red or corner blue.",
+     0.0, 0, 3, {"Class colours", "Quality ramp", "Keep", "Patches"}, {"classes", "ramp", "keep", "patches"}, false},
     {"color_clamp_percentile", ParamType::Float, "Ramp clamp percentile",
      "The quality ramp spans the p-th to the (100-p)-th percentile, so a few extreme values do not "
      "wash out the rest.",
@@ -102,6 +104,14 @@ std::vector<ParamSpec> OutputParameters() {
      "creases from a following smoothing filter.",
      0.0, 0, 3, {"None (keep selection)", "Creases and corners", "Corners only", "Surface only"},
      {"none", "creases", "corners", "surface"}, false},
+    {"crease_edges", ParamType::Bool, "Crease edges, lines and patches",
+     "Find the mesh edges that lie on creases (from the two sheets the votes found, not from the "
+     "dihedral angle alone), link them into crease lines that end at corners, at the border or close on "
+     "themselves, and group the faces into smooth patches bounded by the lines. The crease edges replace "
+     "the faces' edge selection (MeshLab's filters on selected edges, e.g. Build a Polyline from Selected "
+     "Edges, chain after this one), each face gets its patch in the attribute nvv_patch, and the counts "
+     "go to the log. The command-line tool writes the edges and the patches into its PLY.",
+     1.0, 0, 1, {}, {}, false},
     {"max_neighbourhood", ParamType::Int, "Neighbourhood cap (vertices)",
      "Upper bound on the vertices one neighbourhood may hold; bounds the time spent on very high "
      "valence vertices or absurd radii. 0 = automatic: four times what a uniform mesh holds within "
@@ -173,6 +183,7 @@ std::string SetOption(FilterOptions& o, const std::string& name, double value) {
   else if (name == "color_clamp_percentile") o.clampPercentile = value;
   else if (name == "selection") o.selection = SelectionMode(iv);
   else if (name == "max_neighbourhood") o.core.maxNeighbourhood = iv;
+  else if (name == "crease_edges") o.creaseEdges = value != 0;
   return std::string();
 }
 
@@ -194,6 +205,7 @@ double GetOption(const FilterOptions& o, const std::string& name) {
   if (name == "color_clamp_percentile") return o.clampPercentile;
   if (name == "selection") return int(o.selection);
   if (name == "max_neighbourhood") return o.core.maxNeighbourhood;
+  if (name == "crease_edges") return o.creaseEdges ? 1 : 0;
   return std::nan("");
 }
 

@@ -24,7 +24,7 @@ enum class QualityMode : int {
   MeanCurvature = 0, GaussianCurvature, MaxCurvature, MinCurvature, ShapeIndex, Curvedness,
   Class, CuspAngle, SurfaceSaliency, Keep
 };
-enum class ColorMode : int { Classes = 0, QualityRamp, Keep };
+enum class ColorMode : int { Classes = 0, QualityRamp, Keep, Patches };
 enum class SelectionMode : int { None = 0, CreasesAndCorners, CornersOnly, SurfaceOnly };
 
 struct FilterOptions {
@@ -34,7 +34,11 @@ struct FilterOptions {
   ColorMode color = ColorMode::Classes;
   double clampPercentile = 2.0;  // the quality ramp spans the p-th to (100-p)-th percentile
   SelectionMode selection = SelectionMode::None;
+  bool creaseEdges = true;       // crease edges, lines and patches (crease_network.h) after the run
 };
+
+// True when the run must find the crease network: its edges, or the patches to colour.
+inline bool WantsCreaseNetwork(const FilterOptions& o) { return o.creaseEdges || o.color == ColorMode::Patches; }
 
 enum class ParamType { Float, Int, Bool, Enum };
 

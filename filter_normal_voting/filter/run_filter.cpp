@@ -9,8 +9,8 @@
 
 namespace nvv {
 
-std::string CheckOutputPath(const std::string& path) {
-  const std::string prefix = "cannot write the results PLY '" + path + "': ";
+std::string CheckOutputPath(const std::string& path, const std::string& what) {
+  const std::string prefix = "cannot write " + what + " '" + path + "': ";
   const std::size_t slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
   if (::access(dir.c_str(), W_OK) != 0) return prefix + std::strerror(errno) + " (" + dir + ")";

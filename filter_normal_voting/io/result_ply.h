@@ -6,7 +6,8 @@
 //   PLY 1.0, "format binary_little_endian 1.0" (default) or "format ascii 1.0".
 //   Header comments: "comment Normal Vector Voting results (nvv_format 1)", then any comments
 //   the writer was given (the CLI records its input file and every parameter value).
-//   Two elements, in this order:
+//   Two elements, in this order, and a third when the run found the crease network (the
+//   option crease_edges):
 //
 //   element vertex <V>   one per non-deleted vertex, in the mesh's order
 //     property  type   meaning (units)
@@ -50,9 +51,20 @@
 //     property list uchar int vertex_indices
 //                      three 0-based indices into the vertex element (deleted vertices are
 //                      skipped and the indices renumbered accordingly)
+//     patch     int    with the crease network only: the smooth patch of the face, bounded by
+//                      crease lines (0-based), or -1 for a face the filter skipped (repeated
+//                      vertex, non-finite vertex, repeated face)
+//
+//   element edge <E>     with the crease network only: one per crease edge, sorted by vertices
+//     vertex1 vertex2
+//               int    0-based indices into the vertex element, vertex1 < vertex2
+//     cusp_angle
+//               float  angle between the two sheets' normals along the edge, radians
+//     line      int    the crease line the edge belongs to (0-based)
 //
 // MeshLab (and vcglib's importer) reads x y z nx ny nz red green blue alpha quality and the
-// faces; the other properties are extra per-vertex data that it ignores.
+// faces (and, on meshes with edges, the edges' vertex pairs); the other properties are extra
+// data that it ignores.
 //
 // Only vcglib and the standard library are used here (no Qt).
 #ifndef NVV_IO_RESULT_PLY_H
@@ -71,6 +83,7 @@
 #include <vcg/complex/complex.h>
 
 #include "filter/apply_results.h"
+#include "filter/crease_outputs.h"
 #include "core/vertex_result.h"
 #include "io/result_ply_format.h"
 #include "io/result_ply_reader.h"  // ReadResultPly
@@ -91,6 +104,7 @@ inline void AppendLE(std::string& out, const void* p, std::size_t n) {
 inline void AppendBinary(std::string& out, float x) { AppendLE(out, &x, 4); }
 inline void AppendBinary(std::string& out, std::uint8_t x) { out.push_back(char(x)); }
 inline void AppendBinary(std::string& out, std::int32_t x) { AppendLE(out, &x, 4); }
+inline void AppendAscii(std::string& out, std::int32_t x) { out += std::to_string(x); }
 
 // 9 significant digits give back the same float.
 inline void AppendAscii(std::string& out, float x) {
@@ -147,16 +161,19 @@ ResultPlyVertex MakeResultPlyVertex(const MeshType& m, std::size_t i, const Vert
 namespace ply_detail {
 
 // The live vertices' new indices (-1 for deleted ones; returns their count) and the live faces
-// whose three vertices are live, renumbered.
+// whose three vertices are live, renumbered, with their slots in m.face.
 template <class MeshType>
-int LiveElements(const MeshType& m, std::vector<int>& newIndex, std::vector<std::array<int, 3>>& faces) {
+int LiveElements(const MeshType& m, std::vector<int>& newIndex, std::vector<std::array<int, 3>>& faces,
+                 std::vector<std::size_t>& faceSlot) {
   newIndex.assign(m.vert.size(), -1);
   int nv = 0;
   for (std::size_t i = 0; i < m.vert.size(); ++i)
     if (!m.vert[i].IsD()) newIndex[i] = nv++;
   faces.clear();
   faces.reserve(m.face.size());
-  for (const auto& f : m.face) {
+  faceSlot.clear();
+  for (std::size_t s = 0; s < m.face.size(); ++s) {
+    const auto& f = m.face[s];
     if (f.IsD()) continue;
     std::array<int, 3> t;
     bool ok = true;
@@ -166,12 +183,14 @@ int LiveElements(const MeshType& m, std::vector<int>& newIndex, std::vector<std:
       ok = vp != nullptr && k >= 0 && std::size_t(k) < m.vert.size() && newIndex[k] >= 0;
       if (ok) t[j] = newIndex[k];
     }
-    if (ok) faces.push_back(t);
+    if (ok) faces.push_back(t), faceSlot.push_back(s);
   }
   return nv;
 }
 
-inline std::string Header(bool binary, const std::vector<std::string>& comments, int vertices, std::size_t faces) {
+// edges: the number of crease edges, or -1 for a file without the crease network.
+inline std::string Header(bool binary, const std::vector<std::string>& comments, int vertices, std::size_t faces,
+                          long edges) {
   std::string header = "ply\n";
   header += binary ? "format binary_little_endian 1.0\n" : "format ascii 1.0\n";
   header += "comment Normal Vector Voting results (nvv_format 1)\n";
@@ -182,18 +201,23 @@ inline std::string Header(bool binary, const std::vector<std::string>& comments,
     header += std::string("property ") + TypeName(field) + " " + name + "\n";
   });
   header += "element face " + std::to_string(faces) + "\n";
-  header += "property list uchar int vertex_indices\nend_header\n";
-  return header;
+  header += "property list uchar int vertex_indices\n";
+  if (edges >= 0) {
+    header += "property int patch\nelement edge " + std::to_string(edges) + "\n";
+    header += "property int vertex1\nproperty int vertex2\nproperty float cusp_angle\nproperty int line\n";
+  }
+  return header + "end_header\n";
 }
 
 }  // namespace ply_detail
 
 // Writes mesh m with results res (one per slot of m.vert) to `path`, with extra header
-// comments. On failure returns false, sets `error` to one sentence and removes a partial
-// regular file.
+// comments, and the crease network's patches and edges when `crease` is given. On failure
+// returns false, sets `error` to one sentence and removes a partial regular file.
 template <class MeshType>
 bool WriteResultPly(const std::string& path, const MeshType& m, const std::vector<VertexResult>& res, bool binary,
-                    const std::vector<std::string>& comments, std::string& error) {
+                    const std::vector<std::string>& comments, std::string& error,
+                    const CreaseOutputs* crease = nullptr) {
   using namespace ply_detail;
   if (res.size() != m.vert.size()) {
     error = "the results do not match the mesh (" + std::to_string(res.size()) + " results for " +
@@ -202,8 +226,9 @@ bool WriteResultPly(const std::string& path, const MeshType& m, const std::vecto
   }
   std::vector<int> newIndex;
   std::vector<std::array<int, 3>> faces;
-  const int nv = LiveElements(m, newIndex, faces);
-  const std::string header = Header(binary, comments, nv, faces.size());
+  std::vector<std::size_t> faceSlot;
+  const int nv = LiveElements(m, newIndex, faces, faceSlot);
+  const std::string header = Header(binary, comments, nv, faces.size(), crease ? long(crease->net.edges.size()) : -1L);
   FILE* fp = std::fopen(path.c_str(), "wb");
   if (!fp) {
     error = "cannot open '" + path + "' for writing: " + std::strerror(errno);
@@ -242,8 +267,24 @@ bool WriteResultPly(const std::string& path, const MeshType& m, const std::vecto
     if (binary) {
       AppendBinary(buf, std::uint8_t(3));
       for (int j = 0; j < 3; ++j) AppendBinary(buf, std::int32_t(t[j]));
+      if (crease) AppendBinary(buf, std::int32_t(crease->meshFacePatch[faceSlot[i]]));
     } else {
-      buf += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + "\n";
+      buf += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]);
+      if (crease) buf += " " + std::to_string(crease->meshFacePatch[faceSlot[i]]);
+      buf += "\n";
+    }
+    flush(false);
+  }
+  // The network's vertices are live (the graph never uses a deleted one), so each has a new index.
+  for (std::size_t e = 0; crease && e < crease->net.edges.size() && writeErrno == 0; ++e) {
+    const std::int32_t a = newIndex[crease->net.edges[e][0]], b = newIndex[crease->net.edges[e][1]];
+    const float cusp = crease->net.edgeCuspAngle[e];
+    const std::int32_t line = crease->net.edgeLine[e];
+    if (binary) {
+      AppendBinary(buf, a), AppendBinary(buf, b), AppendBinary(buf, cusp), AppendBinary(buf, line);
+    } else {
+      AppendAscii(buf, a), buf += ' ', AppendAscii(buf, b), buf += ' ', AppendAscii(buf, cusp), buf += ' ';
+      AppendAscii(buf, line), buf += '\n';
     }
     flush(false);
   }

@@ -28,11 +28,21 @@ struct ResultPlyVertex {
   std::uint8_t selected = 0;
 };
 
+// One crease edge of the result file (the element "edge", written when the run found the crease
+// network): two indices into the vertex element, the cusp angle in radians, the crease line.
+struct ResultPlyEdge {
+  int vertex[2] = {0, 0};
+  float cuspAngle = 0;
+  int line = -1;
+};
+
 struct ResultPlyData {
   bool binary = true;
   std::vector<std::string> comments;        // header comments, without the "comment " keyword
   std::vector<ResultPlyVertex> vertices;
   std::vector<std::array<int, 3>> faces;
+  std::vector<int> facePatch;               // per face, when the file has the face property "patch"
+  std::vector<ResultPlyEdge> edges;         // empty when the file has no edge element
 };
 
 // Calls f(name, field) for every vertex property, in file order. The writer, the reader and

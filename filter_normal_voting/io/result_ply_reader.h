@@ -1,6 +1,7 @@
 // Reads a full-result PLY (result_ply.h) back into plain structs: binary_little_endian or ascii,
-// every property of ResultPlyVertex required, other properties and elements skipped, faces
-// must be triangles. Standard library only.
+// every property of ResultPlyVertex required, the crease network's face "patch" and "edge"
+// element where the file has them (files without them read as before), other properties and
+// elements skipped, faces must be triangles. Standard library only.
 #ifndef NVV_IO_RESULT_PLY_READER_H
 #define NVV_IO_RESULT_PLY_READER_H
 
@@ -197,10 +198,17 @@ inline std::map<std::string, Slot> VertexSlots() {
   return where;
 }
 
+// A value read as an index: -1 where it is not one an int can hold (a hostile file's 1e30 or NaN).
+inline int ToIndex(double x) { return x >= -2147483648.0 && x <= 2147483647.0 ? int(x) : -1; }
+
+// Where a scalar of any other element goes: record i's value x.
+typedef void (*Store)(ResultPlyData& out, std::size_t i, double x);
+
 // Element e's records: vertex properties into out.vertices through `where`, the face list
-// (property `faceList`, or -1) into out.faces, everything else read and dropped.
-inline bool ReadElement(const Element& e, const std::vector<const Slot*>& where, int faceList, BodyCursor& cur,
-                        ResultPlyData& out, std::string& error) {
+// (property `faceList`, or -1) into out.faces, the properties with a `store` through it,
+// everything else read and dropped.
+inline bool ReadElement(const Element& e, const std::vector<const Slot*>& where, const std::vector<Store>& store,
+                        int faceList, BodyCursor& cur, ResultPlyData& out, std::string& error) {
   for (std::size_t i = 0; i < e.count; ++i) {
     for (std::size_t k = 0; k < e.props.size(); ++k) {
       const Property& p = e.props[k];
@@ -211,6 +219,8 @@ inline bool ReadElement(const Element& e, const std::vector<const Slot*>& where,
           char* dst = reinterpret_cast<char*>(&out.vertices[i]) + where[k]->offset;
           if (where[k]->isFloat) { const float f = float(x); std::memcpy(dst, &f, sizeof f); }
           else *reinterpret_cast<std::uint8_t*>(dst) = std::uint8_t(x);
+        } else if (store[k]) {
+          store[k](out, i, x);
         }
         continue;
       }
@@ -247,6 +257,7 @@ inline bool ReadResultPly(const std::string& path, ResultPlyData& out, std::stri
   bool sawVertex = false, sawFace = false;
   for (const Element& e : elements) {
     std::vector<const Slot*> where(e.props.size(), nullptr);
+    std::vector<Store> store(e.props.size(), nullptr);
     int faceList = -1;
     if (e.name == "vertex") {
       sawVertex = true;
@@ -266,8 +277,25 @@ inline bool ReadResultPly(const std::string& path, ResultPlyData& out, std::stri
           faceList = int(k);
       if (faceList < 0) { error = "the face element has no vertex_indices list"; return false; }
       out.faces.resize(e.count);
+      for (std::size_t k = 0; k < e.props.size(); ++k)
+        if (!e.props[k].list && e.props[k].name == "patch") {
+          store[k] = [](ResultPlyData& o, std::size_t i, double x) { o.facePatch[i] = ToIndex(x); };
+          out.facePatch.assign(e.count, -1);
+        }
     }
-    if (!ReadElement(e, where, faceList, cur, out, error)) return false;
+    if (e.name == "edge") {
+      const std::map<std::string, Store> edgeStores = {
+          {"vertex1", [](ResultPlyData& o, std::size_t i, double x) { o.edges[i].vertex[0] = ToIndex(x); }},
+          {"vertex2", [](ResultPlyData& o, std::size_t i, double x) { o.edges[i].vertex[1] = ToIndex(x); }},
+          {"cusp_angle", [](ResultPlyData& o, std::size_t i, double x) { o.edges[i].cuspAngle = float(x); }},
+          {"line", [](ResultPlyData& o, std::size_t i, double x) { o.edges[i].line = ToIndex(x); }}};
+      for (std::size_t k = 0; k < e.props.size(); ++k) {
+        const auto it = edgeStores.find(e.props[k].name);
+        if (it != edgeStores.end() && !e.props[k].list) store[k] = it->second;
+      }
+      out.edges.resize(e.count);
+    }
+    if (!ReadElement(e, where, store, faceList, cur, out, error)) return false;
   }
   if (!sawVertex) { error = "no vertex element"; return false; }
   if (!sawFace) { error = "no face element"; return false; }
@@ -275,6 +303,12 @@ inline bool ReadResultPly(const std::string& path, ResultPlyData& out, std::stri
     for (int j = 0; j < 3; ++j)
       if (out.faces[i][j] < 0 || std::size_t(out.faces[i][j]) >= out.vertices.size()) {
         error = "face " + std::to_string(i) + " refers to a vertex that does not exist";
+        return false;
+      }
+  for (std::size_t i = 0; i < out.edges.size(); ++i)
+    for (int j = 0; j < 2; ++j)
+      if (out.edges[i].vertex[j] < 0 || std::size_t(out.edges[i].vertex[j]) >= out.vertices.size()) {
+        error = "edge " + std::to_string(i) + " refers to a vertex that does not exist";
         return false;
       }
   return true;

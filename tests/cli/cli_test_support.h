@@ -187,6 +187,7 @@ struct Reference {
   nvv::Summary sum;
   nvv::Status st;
   std::vector<nvv::ResultPlyVertex> records;
+  nvv::CreaseOutputs crease;  // when nvv::WantsCreaseNetwork(options)
 };
 // A reference OBJ reader for the generated samples (v lines, triangular f lines with positive
 // indices): vcglib's importer drops every face that uses the file's first vertex.
@@ -233,9 +234,12 @@ inline bool RunReference(const std::string& path, const nvv::FilterOptions& o, R
     vcg::tri::UpdateNormal<Mesh>::PerVertexAngleWeighted(r.mesh);
     vcg::tri::UpdateNormal<Mesh>::NormalizePerVertex(r.mesh);
   }
-  r.st = vcg::tri::NormalVectorVoting<Mesh>::Compute(r.mesh, o.core, r.res, r.sum);
+  nvv::SurfaceGraph g;
+  r.st = vcg::tri::NormalVectorVoting<Mesh>::Compute(r.mesh, o.core, r.res, r.sum, g);
   if (!r.st.ok) return false;
-  nvv::ApplyResults<Mesh>::Apply(r.mesh, r.res, o);
+  const bool network = nvv::WantsCreaseNetwork(o);
+  if (network) r.crease = nvv::FindCreaseOutputs(r.mesh, g, r.res, r.sum, o.core.creaseAngleDeg);
+  nvv::ApplyResults<Mesh>::Apply(r.mesh, r.res, o, network ? &r.crease : nullptr);
   r.records = RecordsOf(r.mesh, r.res);
   return true;
 }

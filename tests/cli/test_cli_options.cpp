@@ -90,6 +90,9 @@ std::vector<OptionCase> Cases() {
      [](O& o) { o.color = nvv::ColorMode::QualityRamp; o.clampPercentile = 20; }, true},
     {"selection", {"--selection", "corners"}, {}, [](O& o) { o.selection = nvv::SelectionMode::CornersOnly; }, true},
     {"max_neighbourhood", {"--max_neighbourhood", "16"}, {}, [](O& o) { o.core.maxNeighbourhood = 16; }, true},
+    {"color_patches", {"--color", "patches"}, {}, [](O& o) { o.color = nvv::ColorMode::Patches; }, true},
+    // Per face and per edge only: the vertices are those of the defaults (CreaseEdges... below).
+    {"crease_edges", {"--crease_edges", "false"}, {}, [](O& o) { o.creaseEdges = false; }, false},
   };
 }
 
@@ -183,6 +186,27 @@ TEST_F(CliOptions, ColourFollowsTheChosenMode) {
     notClassColour += c[0] != v.color[0] || c[1] != v.color[1] || c[2] != v.color[2];
   }
   EXPECT_GT(notClassColour, ramp.vertices.size() / 2);
+}
+
+// The crease network in the file is the one the run sequence finds in-process; off, the file
+// has neither the faces' patches nor the edges.
+TEST_F(CliOptions, CreaseEdgesWriteTheNetwork) {
+  Reference ref;
+  ASSERT_TRUE(RunReference(input_, nvv::DefaultOptions(), ref)) << ref.st.message;
+  const nvv::ResultPlyData d = Run({});
+  ASSERT_EQ(ref.crease.net.edges.size(), d.edges.size());
+  for (std::size_t e = 0; e < d.edges.size(); ++e) {
+    EXPECT_EQ(ref.crease.net.edges[e][0], d.edges[e].vertex[0]);
+    EXPECT_EQ(ref.crease.net.edges[e][1], d.edges[e].vertex[1]);
+    EXPECT_EQ(ref.crease.net.edgeCuspAngle[e], d.edges[e].cuspAngle);
+    EXPECT_EQ(ref.crease.net.edgeLine[e], d.edges[e].line);
+  }
+  EXPECT_EQ(ref.crease.meshFacePatch, d.facePatch);
+  EXPECT_GT(ref.crease.net.patchCount, 3) << "the cube's six faces, the torus, the roof's two sheets";
+  const nvv::ResultPlyData off = Run({"--crease_edges", "false"});
+  EXPECT_TRUE(off.edges.empty());
+  EXPECT_TRUE(off.facePatch.empty());
+  EXPECT_EQ(d.faces, off.faces);
 }
 
 TEST_F(CliOptions, TaubinFitGivesOtherCurvaturesThanTheQuadric) {

@@ -244,3 +244,73 @@ TEST(ResultPly, WriteFailureIsReportedAndLeavesNoFile) {
   EXPECT_FALSE(error.empty());
   EXPECT_FALSE(Exists(dir.File("w.ply")));
 }
+
+// The crease network's faces are mapped from the graph back to the mesh's slots past deleted
+// vertices and faces, a face on a repeated vertex and a repeated face (both skipped by the
+// filter, so in no patch), and its edges renumbered with the vertices, in both encodings; vcglib's
+// importer still reads the file's standard part.
+TEST(ResultPly, CreaseNetworkFollowsTheMeshsSlots) {
+  Mesh m;
+  SampleMesh(m);
+  for (std::size_t i = 5; i < m.vert.size(); i += 13) vcg::tri::Allocator<Mesh>::DeleteVertex(m, m.vert[i]);
+  for (auto& face : m.face)
+    if (face.V(0)->IsD() || face.V(1)->IsD() || face.V(2)->IsD()) vcg::tri::Allocator<Mesh>::DeleteFace(m, face);
+  std::size_t live = 0;
+  while (m.face[live].IsD()) ++live;
+  Mesh::VertexPointer a = m.face[live].V(0), b = m.face[live].V(1), c = m.face[live].V(2);
+  const std::size_t repeatedVertex = m.face.size(), repeatedFace = m.face.size() + 1;
+  vcg::tri::Allocator<Mesh>::AddFace(m, a, a, b);
+  vcg::tri::Allocator<Mesh>::AddFace(m, b, c, a);  // the first live face again, rotated
+  vcg::tri::UpdateNormal<Mesh>::PerVertexAngleWeighted(m);
+  vcg::tri::UpdateNormal<Mesh>::NormalizePerVertex(m);
+  const nvv::FilterOptions o = nvv::DefaultOptions();
+  std::vector<nvv::VertexResult> res;
+  nvv::Summary sum;
+  nvv::SurfaceGraph g;
+  ASSERT_TRUE(vcg::tri::NormalVectorVoting<Mesh>::Compute(m, o.core, res, sum, g).ok);
+  const std::vector<int> slot = nvv::GraphFaceSlots(m, g);
+  for (int f = 0; f < g.FaceCount(); ++f) {
+    ASSERT_GE(slot[f], 0);
+    for (int j = 0; j < 3; ++j) EXPECT_EQ(g.face[f][j], int(vcg::tri::Index(m, m.face[slot[f]].cV(j))));
+  }
+  const nvv::CreaseOutputs crease = nvv::FindCreaseOutputs(m, g, res, sum, o.core.creaseAngleDeg);
+  EXPECT_EQ(-1, crease.meshFacePatch[repeatedVertex]);
+  EXPECT_EQ(-1, crease.meshFacePatch[repeatedFace]);
+  EXPECT_GE(crease.meshFacePatch[live], 0);
+  ASSERT_GT(crease.net.edges.size(), 0u);
+  nvv::ApplyResults<Mesh>::Apply(m, res, o, &crease);
+  std::vector<int> newIndex(m.vert.size(), -1);
+  int n = 0;
+  for (std::size_t i = 0; i < m.vert.size(); ++i)
+    if (!m.vert[i].IsD()) newIndex[i] = n++;
+  std::vector<int> livePatch;
+  for (std::size_t s = 0; s < m.face.size(); ++s)
+    if (!m.face[s].IsD()) livePatch.push_back(crease.meshFacePatch[s]);
+  TempDir dir;
+  for (bool binary : {true, false}) {
+    SCOPED_TRACE(binary ? "binary" : "ascii");
+    std::string error;
+    ASSERT_TRUE(nvv::WriteResultPly(dir.File("n.ply"), m, res, binary, {}, error, &crease)) << error;
+    nvv::ResultPlyData back;
+    ASSERT_TRUE(nvv::ReadResultPly(dir.File("n.ply"), back, error)) << error;
+    EXPECT_EQ(livePatch, back.facePatch);
+    ASSERT_EQ(crease.net.edges.size(), back.edges.size());
+    for (std::size_t e = 0; e < back.edges.size(); ++e) {
+      EXPECT_EQ(newIndex[crease.net.edges[e][0]], back.edges[e].vertex[0]);
+      EXPECT_EQ(newIndex[crease.net.edges[e][1]], back.edges[e].vertex[1]);
+      EXPECT_EQ(crease.net.edgeCuspAngle[e], back.edges[e].cuspAngle);
+      EXPECT_EQ(crease.net.edgeLine[e], back.edges[e].line);
+    }
+    Mesh standard;
+    int mask = 0;
+    ASSERT_EQ(0, vcg::tri::io::ImporterPLY<Mesh>::Open(standard, dir.File("n.ply").c_str(), mask));
+    EXPECT_EQ(std::size_t(m.fn), standard.face.size());
+  }
+  // The crease edges are the faces' edge selection, on both faces of each (one where a gap is
+  // closed along the border).
+  std::size_t selected = 0;
+  for (const auto& face : m.face)
+    for (int j = 0; j < 3 && !face.IsD(); ++j) selected += face.IsFaceEdgeS(j);
+  EXPECT_LE(selected, 2 * crease.net.edges.size());
+  EXPECT_GE(selected, 2 * crease.net.edges.size() - crease.net.gapEdges);
+}

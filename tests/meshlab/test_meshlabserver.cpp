@@ -153,6 +153,17 @@ TEST(MeshLabServer, EveryParameterIsHonoured) {
     EXPECT_EQ((std::set<float>{0.f, 1.f, 2.f}), values);
   });
   check("color", "1", [&](const MMesh& m, const ServerRun&) { EXPECT_GT(ColourDiffs(base, m), int(m.vert.size()) / 2); });
+  // Patches: the vertices inside each patch take its colour, those on the lines stay red or blue.
+  check("color", "3", [&](const MMesh& m, const ServerRun&) {
+    EXPECT_GT(ColourDiffs(base, m), int(m.vert.size()) / 2);
+    EXPECT_GT(CountColour(m, red), 100);
+  });
+  // The network's log line goes with it (the faces' edge selection and nvv_patch are not saved in
+  // PLY: CreaseEdgesChainIntoAPolylineLayer shows the selection).
+  check("crease_edges", "false", [&](const MMesh& m, const ServerRun& r) {
+    EXPECT_EQ(std::string::npos, r.output.find("Crease network:")) << r.output;
+    EXPECT_EQ(0, ColourDiffs(base, m));
+  });
   check("color_clamp_percentile", "30", [&](const MMesh& m, const ServerRun&) {
     EXPECT_GT(ColourDiffs(*RunFilter(kCad, {{"color", "1"}}, "ramp_default"), m), int(m.vert.size()) / 4);
   }, {{"color", "1"}});
@@ -179,6 +190,27 @@ TEST(MeshLabServer, EveryParameterIsHonoured) {
     EXPECT_NE(std::string::npos, r.output.find("neighbourhood cap")) << r.output;
   });
   for (const auto& p : nvv::FilterParameterTable()) EXPECT_TRUE(covered.count(p.name)) << "no test for parameter " << p.name;
+}
+
+// The crease edges are the faces' edge selection: MeshLab's own "Build a Polyline from Selected
+// Edges" makes a layer of them, with the vertices of the crease edges the command-line tool writes.
+TEST(MeshLabServer, CreaseEdgesChainIntoAPolylineLayer) {
+  const ServerRun r =
+      RunServer(kCad, Out("polyline"), nvv::MlxScript({}, " <filter name=\"Build a Polyline from Selected Edges\"/>\n"), "vc");
+  ASSERT_EQ(0, r.exitCode) << r.output;
+  EXPECT_NE(std::string::npos, r.output.find("Crease network:")) << r.output;
+  MMesh layer;
+  ASSERT_TRUE(ReadPly(Out("polyline"), layer));
+  const std::string cliFull = TempDir() + "/polyline_cli.ply";
+  const std::string cmd = std::string(NVV_CLI) + " --quiet '" + kCad + "' '" + cliFull + "'";
+  ASSERT_EQ(0, std::system(cmd.c_str())) << cmd;
+  nvv::ResultPlyData d;
+  std::string err;
+  ASSERT_TRUE(nvv::ReadResultPly(cliFull, d, err)) << err;
+  std::set<int> onEdges;
+  for (const auto& e : d.edges) onEdges.insert(e.vertex[0]), onEdges.insert(e.vertex[1]);
+  EXPECT_GT(onEdges.size(), 100u);
+  EXPECT_EQ(onEdges.size(), layer.vert.size());
 }
 
 TEST(MeshLabServer, RefusedInputExitsNonZeroWithTheReason) {
@@ -297,6 +329,14 @@ TEST(MeshLabServer, FullResultPlyEqualsTheCommandLineTool) {
     ASSERT_TRUE(nvv::ReadResultPly(mlFull, a, err)) << err;
     ASSERT_TRUE(nvv::ReadResultPly(cliFull, b, err)) << err;
     ExpectSameResults(a, b, 1e-6);
+    EXPECT_EQ(a.facePatch, b.facePatch);
+    ASSERT_EQ(a.edges.size(), b.edges.size());
+    if (in == kCad) EXPECT_GT(a.edges.size(), 100u);  // (the torus has no crease)
+    for (std::size_t e = 0; e < a.edges.size(); ++e) {
+      EXPECT_EQ(a.edges[e].vertex[0], b.edges[e].vertex[0]);
+      EXPECT_EQ(a.edges[e].vertex[1], b.edges[e].vertex[1]);
+      EXPECT_EQ(a.edges[e].line, b.edges[e].line);
+    }
     int withDirections = 0;
     for (const auto& v : a.vertices) {
       EXPECT_GE(v.k1, v.k2);

@@ -270,6 +270,9 @@ TEST(ScriptedUse, EveryParameterIsHonoured) {
   const std::string roof = ObtuseRoof();
   EXPECT_GT(Count(RunFilter({}, roof).cls, crease), 20);
   check("class_rule", 1, [&](const RunResult& r) { EXPECT_EQ(0, Count(r.cls, crease)); }, {}, roof);
+  // The clean roof's sharp edges find its ridge whatever the votes' rule.
+  check("sharp_edge_angle", 20, [&](const RunResult& r) { EXPECT_GT(Count(r.cls, crease), 20); },
+        {{"class_rule", 1}}, roof);
   check("update_normals", 0, [&](const RunResult& r) {
     Session s;
     NewSession(s);
@@ -283,6 +286,17 @@ TEST(ScriptedUse, EveryParameterIsHonoured) {
     EXPECT_EQ((std::set<Scalarm>{0, 1, 2}), values);
   });
   check("color", 1, [&](const RunResult& r) { EXPECT_GT(ColourDiffs(base, r), int(r.colour.size()) / 2); });
+  check("color", 3, [&](const RunResult& r) {  // patches: most vertices lie inside one
+    EXPECT_GT(ColourDiffs(base, r), int(r.colour.size()) / 2);
+    EXPECT_GT(r.dict.at("patches").toInt(), 1);
+  });
+  check("crease_edges", 0, [&](const RunResult& r) {
+    EXPECT_GT(base.dict.at("crease_edge_count").toInt(), 100);
+    EXPECT_GT(base.dict.at("crease_lines").toInt(), 0);
+    EXPECT_GT(base.dict.at("patches").toInt(), 1);
+    EXPECT_EQ(0, r.dict.at("crease_edge_count").toInt());
+    EXPECT_EQ(0, r.dict.at("patches").toInt());
+  });
   check("color_clamp_percentile", 30, [&](const RunResult& r) {
     EXPECT_GT(ColourDiffs(RunFilter({{"color", 1}}), r), int(r.colour.size()) / 4);
   }, {{"color", 1}});

@@ -147,7 +147,8 @@ def test_mesh_without_faces_is_refused_with_the_reason_and_left_unchanged():
 
 
 INT_KEYS = ["surface_vertices", "crease_vertices", "corner_vertices", "unclassified_vertices", "capped_vertices",
-            "thinned_vertices"]
+            "thinned_vertices", "crease_edge_count", "crease_lines", "closed_crease_lines", "line_end_corners",
+            "patches", "smallest_patch_faces", "largest_patch_faces"]
 FLOAT_KEYS = ["k1_min", "k1_max", "k2_min", "k2_max", "absolute_radius", "mean_edge_length", "epsilon", "eta",
               "seconds", "seconds_pass1", "seconds_pass2"]
 

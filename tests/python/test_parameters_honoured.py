@@ -129,6 +129,10 @@ def check_quality(base):
 def check_color(base):
     r = run(color="Quality ramp")
     assert colour_diffs(base, r) > len(r["color"]) // 2
+    # Patches: as many vertex colours (inside the patches) as patches, plus the lines' red and blue.
+    p = run(color="Patches")
+    colours = {tuple(c) for c in np.round(p["color"], 4)}
+    assert p["dict"]["patches"] <= len(colours) <= p["dict"]["patches"] + 2
 
 
 def check_color_clamp_percentile(base):
@@ -141,6 +145,19 @@ def check_selection(base):
     r = run(selection="Creases and corners")
     assert int(np.sum(r["selected"])) == count(r, CREASE, CORNER)
     assert int(np.sum(run(selection="Corners only")["selected"])) == count(r, CORNER)
+
+
+def check_crease_edges(base):
+    # On by default: the network's counts in the dict and each face's patch in nvv_patch.
+    d = base["dict"]
+    assert d["crease_edge_count"] > 100 and d["crease_lines"] > 0 and d["patches"] > 1
+    ms = load(CAD)
+    ms.compute_normal_vector_voting()
+    patch = ms.current_mesh().face_custom_scalar_attribute_array("nvv_patch")
+    assert len(np.unique(patch[patch >= 0])) == d["patches"]
+    assert int(np.min(patch)) >= -1 and int(np.max(patch)) == d["patches"] - 1
+    off = run(crease_edges=False)["dict"]
+    assert off["crease_edge_count"] == 0 and off["patches"] == 0
 
 
 def check_max_neighbourhood(base):

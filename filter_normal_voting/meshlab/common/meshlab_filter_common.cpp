@@ -21,7 +21,8 @@ QString FilterInfo() {
       "their own side of any crease.<br>"
       "Writes vertex normals, quality and colour as chosen, PD1/PD2 with K1 &gt;= K2 (PD1 = direction of "
       "K1), an optional selection, and the attributes nvv_class, nvv_*_saliency, nvv_cusp_angle, "
-      "nvv_crease_curvature, nvv_crease_tangent.<br>"
+      "nvv_crease_curvature, nvv_crease_tangent; with <i>crease_edges</i>, the crease edges as the faces' edge "
+      "selection and each face's smooth patch in the attribute nvv_patch.<br>"
       "<i>D. L. Page, Y. Sun, A. F. Koschan, J. Paik, M. A. Abidi</i>, <b>\"Normal Vector Voting: Crease "
       "Detection and Curvature Estimation on Large, Noisy Meshes\"</b>, Graphical Models 64 (2002).");
 }
@@ -78,9 +79,12 @@ QString ReadOptions(const RichParameterList& par, nvv::FilterOptions& options, Q
   return QString::fromStdString(nvv::ValidateOptions(options));
 }
 
-int OutputMask() {
-  return MeshModel::MM_VERTNORMAL | MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR |
-         MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_VERTCURVDIR;
+int OutputMask(const nvv::FilterOptions* options) {
+  int mask = MeshModel::MM_VERTNORMAL | MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR |
+             MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_VERTCURVDIR;
+  if (options && options->creaseEdges) mask |= MeshModel::MM_FACEFLAG;  // the faces' edge selection
+  if (options && options->color == nvv::ColorMode::Patches) mask |= MeshModel::MM_FACECOLOR;
+  return mask;
 }
 
 Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& resultPly, vcg::CallBackPos* cb) {
@@ -100,10 +104,21 @@ Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& res
     int mask = MeshModel::MM_VERTCURVDIR;
     if (needs.quality) mask |= MeshModel::MM_VERTQUALITY;
     if (needs.color) mask |= MeshModel::MM_VERTCOLOR;
+    if (needs.faceColor) mask |= MeshModel::MM_FACECOLOR;
     mm.updateDataMask(mask);
   };
   const nvv::RunOutcome run = nvv::RunFilter(mm.cm, request, progress, enable);
   out.summary = run.summary;
+  if (run.creaseNetwork) {
+    const nvv::CreaseNetwork& net = run.crease.net;
+    out.creaseEdges = int(net.edges.size());
+    out.creaseLines = int(net.lines.size());
+    out.closedLines = run.crease.closedLines;
+    out.lineCorners = run.crease.lineCorners;
+    out.patches = net.patchCount;
+    out.smallestPatch = net.smallestPatch;
+    out.largestPatch = net.largestPatch;
+  }
   if (!run.meshChanged) {
     out.error = QStringLiteral("Normal Vector Voting: ") + QString::fromStdString(run.error) +
                 (run.failure == nvv::RunOutcome::kCancelled ? QString() : QStringLiteral(" The mesh was not changed."));
@@ -126,7 +141,8 @@ Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& res
   return out;
 }
 
-std::map<std::string, QVariant> SummaryValues(const nvv::Summary& s) {
+std::map<std::string, QVariant> SummaryValues(const Outcome& outcome) {
+  const nvv::Summary& s = outcome.summary;
   // Plain int / double / bool values: every MeshLab front end converts them.
   std::map<std::string, QVariant> v;
   v["surface_vertices"] = int(s.perClass[int(nvv::VertexClass::Surface)]);
@@ -147,6 +163,13 @@ std::map<std::string, QVariant> SummaryValues(const nvv::Summary& s) {
   v["seconds"] = s.secondsTotal;
   v["seconds_pass1"] = s.secondsPass1;
   v["seconds_pass2"] = s.secondsPass2;
+  v["crease_edge_count"] = outcome.creaseEdges;
+  v["crease_lines"] = outcome.creaseLines;
+  v["closed_crease_lines"] = outcome.closedLines;
+  v["line_end_corners"] = outcome.lineCorners;
+  v["patches"] = outcome.patches;
+  v["smallest_patch_faces"] = outcome.smallestPatch;
+  v["largest_patch_faces"] = outcome.largestPatch;
   return v;
 }
 

@@ -42,14 +42,19 @@ void AddParameters(RichParameterList& par);
 // reason when one is refused.
 QString ReadOptions(const RichParameterList& par, nvv::FilterOptions& options, QString& resultPly);
 
-// The MeshModel components the run writes (for postCondition and updateDataMask).
-int OutputMask();
+// The MeshModel components the run writes (for postCondition and updateDataMask); with the
+// options, also those only they ask for (the faces' colours of the patch colouring).
+int OutputMask(const nvv::FilterOptions* options = nullptr);
 
 struct Outcome {
   bool ok = false;
   QString error;          // when !ok: the reason, for errorMessage / MLException and the log
   QStringList log;        // when ok: summary and warnings
   nvv::Summary summary;
+  // The crease network's counts (0 when it was not asked for): edges, lines, closed lines,
+  // distinct corners at line ends, patches and their smallest and largest size in faces.
+  int creaseEdges = 0, creaseLines = 0, closedLines = 0, lineCorners = 0;
+  int patches = 0, smallestPatch = 0, largestPatch = 0;
 };
 
 // Runs the filter on mm and, when resultPly is not empty, writes the full-result PLY there.
@@ -61,8 +66,10 @@ Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& res
 // surface_vertices, crease_vertices, corner_vertices, unclassified_vertices, capped_vertices,
 // thinned_vertices,
 // k1_min, k1_max, k2_min, k2_max, absolute_radius, mean_edge_length, epsilon, eta,
-// sign_aware_rule, seconds, seconds_pass1, seconds_pass2.
-std::map<std::string, QVariant> SummaryValues(const nvv::Summary& summary);
+// sign_aware_rule, seconds, seconds_pass1, seconds_pass2,
+// crease_edge_count, crease_lines, closed_crease_lines, line_end_corners, patches,
+// smallest_patch_faces, largest_patch_faces (0 when crease_edges is off and no patch colours).
+std::map<std::string, QVariant> SummaryValues(const Outcome& outcome);
 
 }  // namespace nvv_meshlab
 

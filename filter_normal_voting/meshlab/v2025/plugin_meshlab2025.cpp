@@ -47,8 +47,8 @@ std::map<std::string, QVariant> NormalVectorVotingPlugin::applyFilter(const QAct
   const nvv_meshlab::Outcome out = nvv_meshlab::Run(*md.mm(), options, resultPly, cb);
   if (!out.ok) fail(out.error);
   for (const QString& line : out.log) log(line.toStdString());
-  postConditionMask = nvv_meshlab::OutputMask();
-  return nvv_meshlab::SummaryValues(out.summary);
+  postConditionMask = nvv_meshlab::OutputMask(&options);
+  return nvv_meshlab::SummaryValues(out);
 }
 
 MESHLAB_PLUGIN_NAME_EXPORTER(NormalVectorVotingPlugin)

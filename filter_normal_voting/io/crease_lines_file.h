@@ -1,0 +1,117 @@
+// The crease lines of a run as a polyline file, for CAD and plotting tools that take curves, not
+// meshes. The format follows the file name's extension:
+//
+//   .obj  "v x y z" for every vertex of a line, then one "l i j k ..." record per line (1-based
+//         indices, in order along the line; a closed line repeats its first index at its end),
+//         each after a comment "# line <id>: length <l>, mean cusp angle <deg> deg, closed" or
+//         "..., ends <corner|free> <corner|free>".
+//   .ply  ascii; "element vertex" (x y z float) with the lines' vertices, and "element edge"
+//         (vertex1 vertex2 int, cusp_angle float in radians, line int): each line's edges in order
+//         along it, so the edges of line i are those with line == i.
+//
+// The vertices are those the lines pass through, each once, numbered in the order the lines
+// first reach them. Only vcglib and the standard library are used here.
+#ifndef NVV_IO_CREASE_LINES_FILE_H
+#define NVV_IO_CREASE_LINES_FILE_H
+
+#include <sys/stat.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "core/params.h"
+#include "filter/crease_outputs.h"
+
+namespace nvv {
+
+// Writes the lines of `crease` (vertex indices into m.vert) to `path`, .obj or .ply by its
+// extension. On failure returns false, sets `error` to one sentence and removes a partial
+// regular file.
+template <class MeshType>
+bool WriteCreaseLines(const std::string& path, const MeshType& m, const CreaseOutputs& crease, std::string& error) {
+  std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".obj" && ext != ".ply") {
+    error = "the crease lines file name must end in .obj or .ply (got '" + path + "')";
+    return false;
+  }
+  const std::vector<CreaseLine>& lines = crease.net.lines;
+  // The lines' vertices, each once, and each line as indices into them.
+  std::vector<int> fileIndex(m.vert.size(), -1), vertices;
+  std::vector<std::vector<int>> polylines(lines.size());
+  for (std::size_t l = 0; l < lines.size(); ++l)
+    for (int v : lines[l].vertices) {
+      if (fileIndex[v] < 0) fileIndex[v] = int(vertices.size()), vertices.push_back(v);
+      polylines[l].push_back(fileIndex[v]);
+    }
+  auto position = [&](int fileVertex) {
+    char buf[96];
+    const auto& p = m.vert[vertices[fileVertex]].cP();
+    std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g", double(p[0]), double(p[1]), double(p[2]));
+    return std::string(buf);
+  };
+  std::string out;
+  if (ext == ".obj") {
+    out += "# Normal Vector Voting crease lines: " + std::to_string(lines.size()) + " lines\n";
+    for (std::size_t i = 0; i < vertices.size(); ++i) out += "v " + position(int(i)) + "\n";
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+      const CreaseLine& line = lines[l];
+      char buf[256];
+      std::snprintf(buf, sizeof buf, "# line %zu: length %.9g, mean cusp angle %.6g deg, ", l, line.length,
+                    RadToDeg(line.meanCuspAngle));
+      out += buf;
+      out += line.closed ? std::string("closed")
+                         : std::string("ends ") + (line.endCorner[0] >= 0 ? "corner " : "free ") +
+                               (line.endCorner[1] >= 0 ? "corner" : "free");
+      out += "\nl";
+      for (int v : polylines[l]) out += " " + std::to_string(v + 1);
+      if (line.closed) out += " " + std::to_string(polylines[l].front() + 1);
+      out += "\n";
+    }
+  } else {
+    std::string body;
+    std::size_t edges = 0;
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+      const std::vector<int>& pl = polylines[l];
+      const std::size_t n = pl.size();
+      for (std::size_t i = 0; i + 1 < n + (lines[l].closed ? 1 : 0); ++i) {
+        const int a = pl[i], b = pl[(i + 1) % n];
+        const int e = crease.EdgeIndex(vertices[a], vertices[b]);
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "%d %d %.9g %zu\n", a, b, e >= 0 ? double(crease.net.edgeCuspAngle[e]) : 0.0, l);
+        body += buf;
+        ++edges;
+      }
+    }
+    out += "ply\nformat ascii 1.0\ncomment Normal Vector Voting crease lines\n";
+    out += "element vertex " + std::to_string(vertices.size()) + "\n";
+    out += "property float x\nproperty float y\nproperty float z\n";
+    out += "element edge " + std::to_string(edges) + "\n";
+    out += "property int vertex1\nproperty int vertex2\nproperty float cusp_angle\nproperty int line\nend_header\n";
+    for (std::size_t i = 0; i < vertices.size(); ++i) out += position(int(i)) + "\n";
+    out += body;
+  }
+  FILE* fp = std::fopen(path.c_str(), "wb");
+  if (!fp) {
+    error = "cannot open '" + path + "' for writing: " + std::strerror(errno);
+    return false;
+  }
+  int writeErrno = std::fwrite(out.data(), 1, out.size(), fp) == out.size() ? 0 : (errno ? errno : EIO);
+  if (std::fclose(fp) != 0 && writeErrno == 0) writeErrno = errno ? errno : EIO;
+  if (writeErrno != 0) {
+    error = "cannot write '" + path + "': " + std::strerror(writeErrno);
+    struct stat st;
+    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) std::remove(path.c_str());  // not /dev/...
+    return false;
+  }
+  return true;
+}
+
+}  // namespace nvv
+
+#endif
