@@ -309,8 +309,8 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
                 << " | " << cell(best[1], bestAngle[1]) << " | " << cell(best[2], bestAngle[2]) << " |\n";
       std::fprintf(stderr, "cad: %s %g %%\n", cm.name.c_str(), noise * 100);
       auto& pool = pooled[size][noise];
-      pool.push_back({nvvDef.strict.f1, best[0].strict.f1, best[1].strict.f1, best[2].strict.f1, nvvDef.near.f1,
-                      best[0].near.f1, best[1].near.f1, best[2].near.f1});
+      pool.push_back({nvvDef.strict.f1, votesOnly.strict.f1, best[0].strict.f1, best[1].strict.f1, best[2].strict.f1,
+                      nvvDef.near.f1, votesOnly.near.f1, best[0].near.f1, best[1].near.f1, best[2].near.f1});
 
       // surfaces next to creases (the CAD parts only: the ABC file has no surface truth)
       std::vector<std::size_t> near;
@@ -342,17 +342,19 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
 
   std::printf("#### Mean F1 over the meshes of each size\n\n"
               "Strict F1 / ±1-edge F1, averaged over the five parts (the ABC model alone).\n\n"
-              "| meshes | noise | NVV defaults | NVV best φ | MeshLab dihedral, best angle | CGAL sharp edges, best angle |\n"
-              "|---|---|---|---|---|---|\n");
+              "| meshes | noise | NVV defaults | NVV votes only | NVV best φ | MeshLab dihedral, best angle | CGAL sharp edges, best angle |\n"
+              "|---|---|---|---|---|---|---|\n");
   Csv scsv(outDir, "cad_summary.csv", "meshes,noise,method,f1,near_f1");
-  const char* pooledNames[4] = {"NVV defaults", "NVV best phi", "MeshLab dihedral best", "CGAL sharp edges best"};
+  const int kPooled = 5;
+  const char* pooledNames[kPooled] = {"NVV defaults", "NVV votes only", "NVV best phi", "MeshLab dihedral best",
+                                      "CGAL sharp edges best"};
   for (const char* size : {"export", "coarse", "default", "fine", "ABC"}) {
     if (!pooled.count(size)) continue;
     for (const auto& kv : pooled[size]) {
       std::printf("| %s | %g %% |", size, kv.first * 100);
-      for (int j = 0; j < 4; ++j) {
+      for (int j = 0; j < kPooled; ++j) {
         double s = 0, t = 0;
-        for (const auto& r : kv.second) { s += r[j]; t += r[j + 4]; }
+        for (const auto& r : kv.second) { s += r[j]; t += r[j + kPooled]; }
         s /= kv.second.size();
         t /= kv.second.size();
         std::printf(" %.2f / %.2f |", s, t);

@@ -70,6 +70,12 @@ TEST(SharpEdges, ACleanShallowCreaseIsFoundExactlyOnItsRidge) {
   }
   const NvvRun none = RunNvv(m, SharpEdges(30));
   for (std::size_t i = 0; i < m.vert.size(); ++i) EXPECT_FALSE(nvv::IsFeature(none.res[i]));
+  // Every third face flipped (an STL file's orientation) change nothing: each edge's angle is
+  // taken between the faces as they would be oriented alike.
+  TMesh flipped;
+  Tent(flipped, 25, 20);
+  for (std::size_t f = 0; f < flipped.face.size(); f += 3) std::swap(flipped.face[f].V(0), flipped.face[f].V(1));
+  EXPECT_EQ(Features(sharp), Features(RunNvv(flipped, WithK(3))));
 }
 
 // A cylinder of 16 facets turns by 22.5 deg at every facet line: above the sharp-edge angle, but

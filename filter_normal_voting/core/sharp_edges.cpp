@@ -10,9 +10,19 @@
 namespace nvv {
 namespace {
 
-// Angle (radians) between the normals of two faces with an area.
-double FaceAngle(const SurfaceGraph& g, int f, int o) {
-  return std::acos(std::max(-1.0, std::min(1.0, g.faceNormal[f].dot(g.faceNormal[o]))));
+// True when face t runs from a to b (a, b: two of its vertices).
+bool RunsFromTo(const std::array<int, 3>& t, int a, int b) {
+  return (t[0] == a && t[1] == b) || (t[1] == a && t[2] == b) || (t[2] == a && t[0] == b);
+}
+
+// The dihedral angle (radians) between faces f and o across their edge (a, b): the angle between
+// their normals, with o's flipped where the two faces run along the edge the same way (a mesh
+// whose orientation is not consistent, as STL files often are, would otherwise show a 180 deg
+// crease at every flipped face).
+double EdgeAngle(const SurfaceGraph& g, int f, int o, int a, int b) {
+  double c = g.faceNormal[f].dot(g.faceNormal[o]);
+  if (RunsFromTo(g.face[f], a, b) == RunsFromTo(g.face[o], a, b)) c = -c;
+  return std::acos(std::max(-1.0, std::min(1.0, c)));
 }
 
 // The mesh's noise angle: the lowest tenth of the dihedral angles over the edges of at most
@@ -23,10 +33,12 @@ double MeshNoiseAngle(const SurfaceGraph& g) {
   const int stride = std::max(1, g.FaceCount() / tuning::kMedianEdgeAngleFaces);
   for (int f = 0; f < g.FaceCount(); f += stride) {
     if (!(g.faceArea[f] > 0)) continue;
-    for (int j = 0; j < 3; ++j)
-      g.ForEachFaceAcross(f, g.face[f][j], g.face[f][(j + 1) % 3], [&](int o) {
-        if (o > f && g.faceArea[o] > 0) angles.push_back(FaceAngle(g, f, o));
+    for (int j = 0; j < 3; ++j) {
+      const int a = g.face[f][j], b = g.face[f][(j + 1) % 3];
+      g.ForEachFaceAcross(f, a, b, [&](int o) {
+        if (o > f && g.faceArea[o] > 0) angles.push_back(EdgeAngle(g, f, o, a, b));
       });
+    }
   }
   if (angles.empty()) return 0;
   std::nth_element(angles.begin(), angles.begin() + angles.size() / 10, angles.end());
@@ -52,7 +64,7 @@ double ParallelTurn(const SurfaceGraph& g, int c, const Eigen::Vector3d& e) {
     for (int y : g.face[h]) {
       if (y == c || std::abs((g.pos[y] - g.pos[c]).normalized().dot(e)) < tuning::kSharpEdgeParallelCos) continue;
       g.ForEachFaceAcross(h, c, y, [&](int o) {  // each face pair once, from its lower face
-        if (o > h && g.faceArea[o] > 0) turn = std::max(turn, FaceAngle(g, h, o));
+        if (o > h && g.faceArea[o] > 0) turn = std::max(turn, EdgeAngle(g, h, o, c, y));
       });
     }
   }
@@ -104,14 +116,15 @@ SharpVerdict JudgeVertex(const SurfaceGraph& g, int v, const Thresholds& t) {
         if (o < f || !(g.faceArea[o] > 0)) return;
         const int d = ThirdVertex(g.face[o], v, x);
         if (d == c) return;  // f repeated with the other orientation
-        const double theta = FaceAngle(g, f, o);
+        const double theta = EdgeAngle(g, f, o, v, x);
         if (!IsSharpEdge(g, v, x, c, d, theta, t)) return;
         Eigen::Vector3d dir = (g.pos[x] - g.pos[v]).normalized();
         if (count == 0) firstDir = dir;
         else if (std::abs(dir.dot(firstDir)) < tuning::kCosSameLine) corner = true;
         if (dir.dot(firstDir) < 0) dir = -dir;
         tangent += dir;
-        normal += g.faceNormal[f] + g.faceNormal[o];
+        const bool flipped = RunsFromTo(g.face[f], v, x) == RunsFromTo(g.face[o], v, x);
+        normal += g.faceNormal[f] + (flipped ? -g.faceNormal[o] : g.faceNormal[o]);
         cusp += theta;
         ++count;
       });

@@ -64,7 +64,7 @@ std::vector<OptionCase> Cases() {
     {"absolute_radius", {"--absolute_radius", "0.45"}, {}, [](O& o) { o.core.absoluteRadius = 0.45; }, true},
     {"crease_angle", {"--crease_angle", "20"}, {}, [](O& o) { o.core.creaseAngleDeg = 20; }, true},
     {"corner_angle", {"--corner_angle", "30"}, {}, [](O& o) { o.core.cornerAngleDeg = 30; }, true},
-    {"sharp_edge_angle", {"--sharp_edge_angle", "20"}, {}, [](O& o) { o.core.sharpEdgeAngleDeg = 20; }, true},
+    {"sharp_edge_angle", {"--sharp_edge_angle", "0"}, {}, [](O& o) { o.core.sharpEdgeAngleDeg = 0; }, true},
     // The quadric fit already leaves out neighbours across a crease; the paper's Taubin votes
     // show whether the march stops there.
     {"stop_at_creases", {"--curvature_fit", "taubin", "--stop_at_creases", "false"}, {"--curvature_fit", "taubin"},
@@ -74,8 +74,10 @@ std::vector<OptionCase> Cases() {
     {"curvature_fit_euler", {"--curvature_fit", "euler"}, {},
      [](O& o) { o.core.fit = nvv::CurvatureFit::EulerLeastSquares; }, true},
     // At the default 60 deg the CAD part's band is one vertex wide already; at 30 deg it is wide.
-    {"thin_creases", {"--crease_angle", "30", "--thin_creases", "false"}, {"--crease_angle", "30"},
-     [](O& o) { o.core.creaseAngleDeg = 30; o.core.thinCreases = false; }, true},
+    // Thinning acts on the votes' band: the clean part's sharp edges, which need none, are off.
+    {"thin_creases", {"--sharp_edge_angle", "0", "--crease_angle", "30", "--thin_creases", "false"},
+     {"--sharp_edge_angle", "0", "--crease_angle", "30"},
+     [](O& o) { o.core.sharpEdgeAngleDeg = 0; o.core.creaseAngleDeg = 30; o.core.thinCreases = false; }, true},
     {"fit_rounds", {"--fit_rounds", "1"}, {}, [](O& o) { o.core.fitRounds = 1; }, true},
     {"cubic_fit", {"--cubic_fit", "false"}, {}, [](O& o) { o.core.cubicFit = false; }, true},
     {"class_rule", {"--class_rule", "paper"}, {}, [](O& o) { o.core.classRule = nvv::ClassRule::PaperOrder; }, true},

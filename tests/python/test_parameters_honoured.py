@@ -77,11 +77,13 @@ def check_corner_angle(base):
 
 
 def check_sharp_edge_angle(base):
-    # A clean 25 deg roof: below the 60 deg crease angle for the votes, sharp for its edges.
-    votes = run(roof(alpha_deg=25.0))
-    sharp = run(roof(alpha_deg=25.0), sharp_edge_angle=20)
+    # A clean 25 deg roof: below the 60 deg crease angle for the votes, sharp for its edges
+    # (default 10 deg); at 30 deg its edges are not sharp either.
+    sharp = run(roof(alpha_deg=25.0))
+    votes = run(roof(alpha_deg=25.0), sharp_edge_angle=0)
     assert count(sharp, CREASE, CORNER) == 33  # the ridge, and only the ridge
     assert count(votes, CREASE, CORNER) < 16
+    assert count(run(roof(alpha_deg=25.0), sharp_edge_angle=30), CREASE, CORNER) == 0
 
 
 def check_stop_at_creases(base):
@@ -111,7 +113,9 @@ def check_cubic_fit(base):
 
 def check_class_rule(base):
     assert count(run(roof()), CREASE) > 20
-    assert count(run(roof(), class_rule="Paper's eigenvalue order"), CREASE) == 0
+    # the votes' rule alone (the clean roof's sharp edges find its ridge whatever the rule)
+    assert count(run(roof(), class_rule="Paper's eigenvalue order", sharp_edge_angle=0), CREASE) == 0
+    assert count(run(roof(), class_rule="Paper's eigenvalue order"), CREASE) > 20
 
 
 def check_update_normals(base):
