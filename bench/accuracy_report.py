@@ -537,20 +537,22 @@ def cad(size, noise, method, col="f1"):
     return val("cad_summary", size, noise, method, col)
 
 
+for size in ("default", "fine", "ABC"):
+    claim(cad(size, "0", "NVV defaults") >= cad(size, "0", "MeshLab dihedral best") - 0.02 and
+          cad(size, "0", "NVV defaults") - cad(size, "0", "NVV votes only") > 0.1,
+          "clean default, fine and ABC meshes: the sharp edges match the dihedral tests at their best angle, far above the votes alone")
 for size in ("export", "coarse"):
-    claim(cad(size, "0", "NVV defaults") < cad(size, "0", "MeshLab dihedral best") - 0.3 and
-          cad(size, "0", "NVV best phi") < cad(size, "0", "MeshLab dihedral best") - 0.3,
-          "clean export and coarse meshes: the defaults lose by far, and the filter's best angle does not rescue it")
-for size in ("default", "fine"):
     claim(cad(size, "0", "NVV defaults") < cad(size, "0", "MeshLab dihedral best") and
-          cad(size, "0", "NVV best phi") - cad(size, "0", "NVV defaults") > 0.05,
-          "clean default and fine meshes: the defaults lose, mostly because of the default angle")
+          cad(size, "0", "NVV defaults") - cad(size, "0", "NVV votes only") > 0.3,
+          "clean export and coarse meshes: close to the dihedral tests, not yet equal; far above the votes alone")
+claim(cad("default", "5", "NVV defaults") < cad("default", "5", "MeshLab dihedral best") and
+      cad("default", "5", "NVV best phi") >= cad("default", "5", "MeshLab dihedral best") - 0.03,
+      "default meshes at 5 %: the dihedral tests at their best angle lead the defaults; the filter at its best angle is level")
+for size in ("default", "fine"):
     for noise in ("10", "20"):
         claim(cad(size, noise, "NVV defaults") > cad(size, noise, "MeshLab dihedral best"),
               "from 10 % noise the defaults beat the dihedral tests at their best angle on default and fine meshes")
-claim(cad("ABC", "0", "NVV best phi") - cad("ABC", "0", "NVV defaults") > 0.2 and
-      cad("ABC", "20", "NVV defaults") > cad("ABC", "20", "MeshLab dihedral best"),
-      "the ABC model: the default angle costs the defaults; at 20 % noise they win")
+claim(cad("ABC", "20", "NVV defaults") > cad("ABC", "20", "MeshLab dihedral best"), "the ABC model at 20 %: the defaults win")
 claim(all(abs(cad(r["meshes"], r["noise"], "MeshLab dihedral best") - cad(r["meshes"], r["noise"], "CGAL sharp edges best")) <= 0.02
           for r in cad_rows["cad_summary"]), "MeshLab's and CGAL's tests agree to within 0.02 in every row of the summary")
 for r in cad_rows["cad_curvature"]:
@@ -664,7 +666,7 @@ if near:
     plt.close(fig)
 
 
-def fandisk_panel(ax, verts, faces, col, title, nvv):
+def classes_panel(ax, verts, faces, col, title, nvv):
     P = np.array([[float(v["x"]), float(v["y"]), float(v["z"])] for v in verts])
     c = np.array([int(v[col]) for v in verts])
     F = np.array(faces)
@@ -707,9 +709,25 @@ if os.path.exists(fpath):
               (noisy, "cgal", "CGAL sharp edges, 5 % noise", False), (noisy, "truth", "5 % noise mesh, truth", False)]
     for i, (verts, col, title, nvv) in enumerate(panels):
         ax = fig.add_subplot(2, 4, i + 1, projection="3d")
-        fandisk_panel(ax, verts, faces, col, title + " (crease angle 30°)" if col != "truth" else title, nvv)
+        classes_panel(ax, verts, faces, col, title + " (crease angle 30°)" if col != "truth" else title, nvv)
     fig.tight_layout()
     fig.savefig(os.path.join(img_dir, "accuracy_fandisk.png"), dpi=100)
+    plt.close(fig)
+
+# the CAD parts: a coarse and a fine bracket, clean and at 10 % noise
+cad_pics = [(m, t) for m in ("bracket_coarse", "bracket_fine") for t in ("clean", "noise10")]
+if all(os.path.exists(os.path.join(res, "cadpic_%s_%s_vertices.csv" % mt)) for mt in cad_pics):
+    fig = plt.figure(figsize=(14, 7))
+    columns = [("truth", "truth (sharp CAD curves)", False), ("nvv", "NVV defaults", True),
+               ("votes", "NVV votes only", True), ("dihedral30", "MeshLab dihedral 30°", False)]
+    for row, (mesh, tag) in enumerate([("bracket_coarse", "clean"), ("bracket_fine", "clean"), ("bracket_fine", "noise10")]):
+        faces = [[int(r["a"]), int(r["b"]), int(r["c"])] for r in rows("cadpic_%s_faces.csv" % mesh)]
+        verts = rows("cadpic_%s_%s_vertices.csv" % (mesh, tag))
+        for j, (col, title, nvv) in enumerate(columns):
+            ax = fig.add_subplot(3, 4, 4 * row + j + 1, projection="3d")
+            classes_panel(ax, verts, faces, col, "%s, %s: %s" % (mesh, "clean" if tag == "clean" else "10 % noise", title), nvv)
+    fig.tight_layout()
+    fig.savefig(os.path.join(img_dir, "accuracy_cad_parts.png"), dpi=90)
     plt.close(fig)
 
 # ---- the page

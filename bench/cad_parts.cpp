@@ -287,6 +287,23 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
         votesOnly = ScoreBoth(featuresOf(r), cm.sharp, ring);
         row("NVV votes only", p.creaseAngleDeg, votesOnly);
       }
+      // the pictures' data (docs/images/accuracy_cad_parts.png): a coarse and a fine part, clean and
+      // at 10 %: positions, truth, the defaults' classes, the votes' alone, MeshLab's dihedral test at 30 deg
+      if ((cm.name == "bracket_coarse" || cm.name == "bracket_fine") && (noise == 0 || noise == 0.10)) {
+        std::vector<nvv::VertexResult> r;
+        nvv::Summary sum;
+        nvv::Params p = ests[0].params;
+        p.sharpEdgeAngleDeg = 0;
+        nvv::RunNormalVectorVoting(c.graph, p, r, sum);
+        const std::vector<char> dihedral = DihedralCreaseVertices(m, 30);
+        Csv pts(outDir, "cadpic_" + cm.name + "_" + (noise == 0 ? "clean" : "noise10") + "_vertices.csv",
+                "x,y,z,truth,nvv,votes,dihedral30");
+        for (std::size_t i = 0; i < m.vert.size(); ++i)
+          std::fprintf(pts.f(), "%g,%g,%g,%d,%d,%d,%d\n", m.vert[i].cP()[0], m.vert[i].cP()[1], m.vert[i].cP()[2],
+                       int(cm.sharp[i]), int(res[i].cls), int(r[i].cls), int(dihedral[i]));
+        Csv fs(outDir, "cadpic_" + cm.name + "_faces.csv", "a,b,c");
+        for (const auto& f : c.plain.face) std::fprintf(fs.f(), "%d,%d,%d\n", f[0], f[1], f[2]);
+      }
       // the filter and the peers at each angle; the best strict F1 of each
       Score best[3];
       double bestAngle[3] = {0, 0, 0};

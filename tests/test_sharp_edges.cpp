@@ -49,6 +49,8 @@ TEST(SharpEdges, ACleanShallowCreaseIsFoundExactlyOnItsRidge) {
   const NvvRun votes = RunNvv(m, SharpEdges(0));
   const NvvRun sharp = RunNvv(m, WithK(3));
   ASSERT_TRUE(sharp.st.ok) << sharp.st.message;
+  EXPECT_TRUE(sharp.sum.sharpEdges);
+  EXPECT_FALSE(votes.sum.sharpEdges);
   int onRidge = 0, ridgeFound = 0, offRidgeFound = 0, votesFound = 0;
   for (std::size_t i = 0; i < m.vert.size(); ++i) {
     const bool ridge = m.vert[i].P()[0] == 0;
@@ -59,6 +61,7 @@ TEST(SharpEdges, ACleanShallowCreaseIsFoundExactlyOnItsRidge) {
   }
   EXPECT_EQ(onRidge, ridgeFound);
   EXPECT_EQ(0, offRidgeFound);
+  EXPECT_GE(sharp.sum.sharpEdgeChanged, std::size_t(onRidge - votesFound));
   EXPECT_LT(votesFound, onRidge / 2);  // what the sharp edges add
   // Interior ridge vertices are creases along y with the crease's normal-angle as cusp angle.
   for (std::size_t i = 0; i < m.vert.size(); ++i) {
@@ -124,7 +127,9 @@ TEST(SharpEdges, NoisyMeshesAreLeftToTheVotesAndResultsDoNotDependOnThreads) {
     TMesh m;
     nvv_shapes::Cube(m, 5.0, 21);
     NoiseAlongNormals(m, noise * 0.5, 3);  // l_ave = 0.5
-    EXPECT_TRUE(SameBits(RunNvv(m, SharpEdges(0)).res, RunNvv(m, SharpEdges(nvv::Params().sharpEdgeAngleDeg)).res)) << "noise " << noise;
+    const NvvRun on = RunNvv(m, SharpEdges(nvv::Params().sharpEdgeAngleDeg));
+    EXPECT_FALSE(on.sum.sharpEdges) << "noise " << noise;
+    EXPECT_TRUE(SameBits(RunNvv(m, SharpEdges(0)).res, on.res)) << "noise " << noise;
   }
   TMesh m;
   CappedCylinder(m, 5.0, 10.0, 16, 20);

@@ -157,7 +157,7 @@ Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std::vector
   PassProgress ridges(cb, g.VertexCount(), share, share, "Normal vector voting: crease ridges");
   end = ThinCreases(g, p, s, threads, ridges, out, sum.thinned);
   if (end != PassEnd::Done) return Unfinished(end);
-  ClassifyCleanVerticesBySharpEdges(g, p, threads, out);
+  sum.sharpEdges = ClassifyCleanVerticesBySharpEdges(g, p, threads, out, sum.sharpEdgeChanged);
   sum.secondsPass1 = SecondsSince(t0);
 
   const auto t1 = Clock::now();

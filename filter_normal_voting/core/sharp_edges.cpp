@@ -174,11 +174,12 @@ bool Apply(const SurfaceGraph& g, int v, const SharpVerdict& s, VertexResult& r)
 
 }  // namespace
 
-std::size_t ClassifyCleanVerticesBySharpEdges(const SurfaceGraph& g, const Params& p, int threads,
-                                              std::vector<VertexResult>& res) {
-  if (!(p.sharpEdgeAngleDeg > 0)) return 0;
+bool ClassifyCleanVerticesBySharpEdges(const SurfaceGraph& g, const Params& p, int threads,
+                                       std::vector<VertexResult>& res, std::size_t& changed) {
+  changed = 0;
+  if (!(p.sharpEdgeAngleDeg > 0)) return false;
   const double noise = MeshNoiseAngle(g);
-  if (!(noise < DegToRad(tuning::kCleanMeshNoiseDeg))) return 0;  // a noisy mesh: the votes decide everywhere
+  if (!(noise < DegToRad(tuning::kCleanMeshNoiseDeg))) return false;  // a noisy mesh: the votes decide everywhere
   Thresholds t;
   t.sharp = DegToRad(std::min(p.sharpEdgeAngleDeg, p.creaseAngleDeg));
   t.always = DegToRad(std::max(tuning::kSharpEdgeAlwaysDeg, p.sharpEdgeAngleDeg));
@@ -189,10 +190,9 @@ std::size_t ClassifyCleanVerticesBySharpEdges(const SurfaceGraph& g, const Param
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
   for (int v = 0; v < n; ++v)
     if (res[v].cls != VertexClass::Invalid && g.Referenced(v)) verdict[v] = JudgeVertex(g, v, t);
-  std::size_t changed = 0;
   for (int v = 0; v < n; ++v)
     if (res[v].cls != VertexClass::Invalid && g.Referenced(v)) changed += Apply(g, v, verdict[v], res[v]);
-  return changed;
+  return true;
 }
 
 }  // namespace nvv

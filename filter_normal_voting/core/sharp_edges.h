@@ -34,10 +34,10 @@
 
 namespace nvv {
 
-// On a clean mesh, reclassifies every vertex from its sharp edges (Params::sharpEdgeAngleDeg > 0).
-// Returns how many vertices changed class.
-std::size_t ClassifyCleanVerticesBySharpEdges(const SurfaceGraph& g, const Params& p, int threads,
-                                              std::vector<VertexResult>& res);
+// On a clean mesh, reclassifies every vertex from its sharp edges (Params::sharpEdgeAngleDeg > 0)
+// and returns true, with how many vertices changed class; false where the votes stay.
+bool ClassifyCleanVerticesBySharpEdges(const SurfaceGraph& g, const Params& p, int threads,
+                                       std::vector<VertexResult>& res, std::size_t& changed);
 
 }  // namespace nvv
 

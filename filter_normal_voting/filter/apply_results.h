@@ -264,14 +264,18 @@ class ApplyResults {
 
 // One log line with counts per class, curvature ranges, radius and time.
 inline std::string SummaryLine(const Summary& s) {
-  char buf[512];
+  char sharp[128] = "";
+  if (s.sharpEdges)
+    std::snprintf(sharp, sizeof sharp, "; a clean mesh: classes from its sharp edges, %zu changed from the votes'",
+                  s.sharpEdgeChanged);
+  char buf[640];
   std::snprintf(buf, sizeof buf,
                 "Normal vector voting: %zu surface, %zu crease, %zu corner, %zu unclassified vertices "
-                "(%zu band vertices thinned off the ridges); "
+                "(%zu band vertices thinned off the ridges%s); "
                 "k1 in [%.4g, %.4g], k2 in [%.4g, %.4g]; radius %.4g (mean edge %.4g), epsilon %.3g, eta %.3g; "
                 "%.2f s (pass 1 %.2f s, pass 2 %.2f s)",
-                s.perClass[0], s.perClass[1], s.perClass[2], s.perClass[3], s.thinned, s.k1Min, s.k1Max, s.k2Min, s.k2Max,
-                s.radius, s.meanEdge, s.epsilon, s.eta, s.secondsTotal, s.secondsPass1, s.secondsPass2);
+                s.perClass[0], s.perClass[1], s.perClass[2], s.perClass[3], s.thinned, sharp, s.k1Min, s.k1Max, s.k2Min,
+                s.k2Max, s.radius, s.meanEdge, s.epsilon, s.eta, s.secondsTotal, s.secondsPass1, s.secondsPass2);
   return buf;
 }
 

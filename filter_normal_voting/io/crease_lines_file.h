@@ -14,8 +14,6 @@
 #ifndef NVV_IO_CREASE_LINES_FILE_H
 #define NVV_IO_CREASE_LINES_FILE_H
 
-#include <sys/stat.h>
-
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -26,6 +24,7 @@
 
 #include "core/params.h"
 #include "filter/crease_outputs.h"
+#include "io/close_output.h"
 
 namespace nvv {
 
@@ -101,15 +100,8 @@ bool WriteCreaseLines(const std::string& path, const MeshType& m, const CreaseOu
     error = "cannot open '" + path + "' for writing: " + std::strerror(errno);
     return false;
   }
-  int writeErrno = std::fwrite(out.data(), 1, out.size(), fp) == out.size() ? 0 : (errno ? errno : EIO);
-  if (std::fclose(fp) != 0 && writeErrno == 0) writeErrno = errno ? errno : EIO;
-  if (writeErrno != 0) {
-    error = "cannot write '" + path + "': " + std::strerror(writeErrno);
-    struct stat st;
-    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) std::remove(path.c_str());  // not /dev/...
-    return false;
-  }
-  return true;
+  const int writeErrno = std::fwrite(out.data(), 1, out.size(), fp) == out.size() ? 0 : (errno ? errno : EIO);
+  return CloseOutput(fp, writeErrno, path, error);
 }
 
 }  // namespace nvv

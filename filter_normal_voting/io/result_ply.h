@@ -70,8 +70,6 @@
 #ifndef NVV_IO_RESULT_PLY_H
 #define NVV_IO_RESULT_PLY_H
 
-#include <sys/stat.h>
-
 #include <array>
 #include <cerrno>
 #include <cstdint>
@@ -84,6 +82,7 @@
 
 #include "filter/apply_results.h"
 #include "filter/crease_outputs.h"
+#include "io/close_output.h"
 #include "core/vertex_result.h"
 #include "io/result_ply_format.h"
 #include "io/result_ply_reader.h"  // ReadResultPly
@@ -289,14 +288,7 @@ bool WriteResultPly(const std::string& path, const MeshType& m, const std::vecto
     flush(false);
   }
   flush(true);
-  if (std::fclose(fp) != 0 && writeErrno == 0) writeErrno = errno ? errno : EIO;
-  if (writeErrno != 0) {
-    error = "cannot write '" + path + "': " + std::strerror(writeErrno);
-    struct stat st;
-    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) std::remove(path.c_str());  // not /dev/...
-    return false;
-  }
-  return true;
+  return CloseOutput(fp, writeErrno, path, error);
 }
 
 template <class MeshType>
