@@ -297,8 +297,9 @@ claim(val("smooth_variants", "torus a=24 b=8", "0", "NVV quadric (default) k=8",
       val("smooth_variants", "torus a=24 b=8", "0", d5, "curv_med") >
       val("smooth_variants", "torus a=24 b=8", "0", d3, "curv_med"),
       "on the clean torus, the curvature error grows with k")
-claim(val("real_f1", "fandisk.off", "0", "NVV k=1", "f1") > val("real_f1", "fandisk.off", "0", "NVV k=5", "f1"),
-      "on the clean fandisk, k = 1 finds the creases better than k = 5")
+claim(val("real_f1", "fandisk.off", "0", "NVV k=1", "f1") == val("real_f1", "fandisk.off", "0", "NVV k=5", "f1") and
+      val("real_f1", "fandisk.off", "10", "NVV k=1", "f1") > val("real_f1", "fandisk.off", "10", "NVV k=5", "f1"),
+      "on the clean fandisk the sharp edges decide whatever k; at 10 % noise k = 1 finds the creases better than k = 5")
 for n in ("1", "2", "5", "10", "20"):
     for e in ["NVV paper Taubin k=3", "NVV Euler LSQ k=3", "MeshLab Taubin one-ring", "MeshLab Quadric Fitting",
               "MeshLab Normal Cycles", "MeshLab PCA r=3 l_ave", "MeshLab PCA r=diag/20", "CGAL jet r=3 l_ave"]:
@@ -312,8 +313,8 @@ for e in near_est[1:]:
               "next to creases the default's normal p90 is the smallest")
 claim(all(fnum(r["f1"]) >= 0.9 for r in f1 if r["method"] == "NVV k=3" and float(r["alpha"]) >= 40),
       "every crease of 40° or more reaches F1 0.9 at k = 3, up to 20 % noise")
-claim(val("real_f1", "fandisk.off", "0", "NVV k=3 paper band", "precision") < val("real_f1", "fandisk.off", "0", "NVV k=3", "precision"),
-      "thin_creases off: lower precision on the clean fandisk")
+claim(val("real_f1", "fandisk.off", "5", "NVV k=3 paper band", "precision") < val("real_f1", "fandisk.off", "5", "NVV k=3", "precision"),
+      "thin_creases off: lower precision on fandisk at 5 % noise")
 for e in ("MeshLab Quadric Fitting", "MeshLab Normal Cycles"):
     claim(val("smooth_grids", "cylinder", "0", e, "dir_med") > 80, "%s's minimum direction is the other principal direction" % e)
 jr = val("smooth_grids", "sphere", "5", "CGAL jet r=6 l_ave (2x)", "normal_med") / val("smooth_grids", "sphere", "5", d5, "normal_med")
@@ -666,7 +667,10 @@ if near:
     plt.close(fig)
 
 
-def classes_panel(ax, verts, faces, col, title, nvv):
+def classes_panel(ax, verts, faces, col, title, nvv, dots=False):
+    """Shaded faces coloured by their vertices' classes, or (dots) grey faces with the crease (red)
+    and corner (blue) vertices as dots: on a coarse export every face touches a crease, and face
+    colours would paint whole planes."""
     P = np.array([[float(v["x"]), float(v["y"]), float(v["z"])] for v in verts])
     c = np.array([int(v[col]) for v in verts])
     F = np.array(faces)
@@ -679,6 +683,13 @@ def classes_panel(ax, verts, faces, col, title, nvv):
     shade = 0.35 + 0.6 * np.clip(np.abs(nrm @ light), 0, 1)
     # face colour: red if all three vertices are crease, blue if any is a corner
     fc = np.stack([shade, shade, shade], axis=1)
+    if dots:
+        ax.add_collection3d(Poly3DCollection(tri, facecolors=fc, edgecolors="none", alpha=0.55))
+        for cls, colour in ((1, (0.85, 0.1, 0.05)), (2, (0.1, 0.25, 0.95))):
+            if cls == 2 and not nvv:
+                continue
+            sel = c == cls if nvv else c == 1 if cls == 1 else c < 0
+            ax.scatter(P[sel, 0], P[sel, 1], P[sel, 2], s=3, color=colour, depthshade=False)
     crease = c[F] == 1
     corner = c[F] == 2
     red = crease.sum(axis=1) >= 2
@@ -686,7 +697,8 @@ def classes_panel(ax, verts, faces, col, title, nvv):
     if nvv:
         blue = corner.any(axis=1)
         fc[blue] = np.stack([0.15 * shade[blue], 0.3 * shade[blue], 0.95 * shade[blue]], axis=1)
-    ax.add_collection3d(Poly3DCollection(tri, facecolors=fc, edgecolors="none"))
+    if not dots:
+        ax.add_collection3d(Poly3DCollection(tri, facecolors=fc, edgecolors="none"))
     lo, hi = P.min(axis=0), P.max(axis=0)
     ctr, rad = (lo + hi) / 2, (hi - lo).max() / 2
     ax.set_xlim(ctr[0] - rad, ctr[0] + rad)
@@ -725,7 +737,8 @@ if all(os.path.exists(os.path.join(res, "cadpic_%s_%s_vertices.csv" % mt)) for m
         verts = rows("cadpic_%s_%s_vertices.csv" % (mesh, tag))
         for j, (col, title, nvv) in enumerate(columns):
             ax = fig.add_subplot(3, 4, 4 * row + j + 1, projection="3d")
-            classes_panel(ax, verts, faces, col, "%s, %s: %s" % (mesh, "clean" if tag == "clean" else "10 % noise", title), nvv)
+            classes_panel(ax, verts, faces, col, "%s, %s: %s" % (mesh, "clean" if tag == "clean" else "10 % noise", title), nvv,
+                          dots=True)
     fig.tight_layout()
     fig.savefig(os.path.join(img_dir, "accuracy_cad_parts.png"), dpi=90)
     plt.close(fig)
