@@ -14,6 +14,8 @@ SAME_MESH_MAX_GROWTH = 8 << 20  # bytes, between call 10 and call 50 on one mesh
 # Bytes per vertex of the filter's per-vertex attributes: nvv_class, five saliencies/angles as
 # Scalarm (double) and nvv_crease_tangent as Point3m.
 ATTRIBUTE_BYTES_PER_VERTEX = 6 * 8 + 3 * 8
+# Bytes per face of its per-face attribute nvv_patch (Scalarm).
+ATTRIBUTE_BYTES_PER_FACE = 8
 
 
 def test_fifty_calls_on_one_mesh_give_the_same_result_in_bounded_memory():
@@ -39,10 +41,10 @@ def test_fifty_meshes_loaded_filtered_and_deleted_in_one_process():
     # commented out): PyMeshLab's own add_vertex_custom_scalar_attribute leaks the same way. So
     # each deleted mesh may keep its attributes' bytes, and no more than that.
     ms = pymeshlab.MeshSet()
-    first, rss, n = None, [], 0
+    first, rss, n, f = None, [], 0, 0
     for i in range(CALLS):
         ms.load_new_mesh(str(CAD))
-        n = ms.current_mesh().vertex_number()
+        n, f = ms.current_mesh().vertex_number(), ms.current_mesh().face_number()
         out = ms.compute_normal_vector_voting(selection="Creases and corners")
         summary = {k: v for k, v in out.items() if not k.startswith("seconds")}
         if first is None:
@@ -53,7 +55,7 @@ def test_fifty_meshes_loaded_filtered_and_deleted_in_one_process():
         rss.append(rss_bytes())
     assert ms.mesh_number() == 0
     per_call = (rss[-1] - rss[9]) / (CALLS - 10)
-    attributes = ATTRIBUTE_BYTES_PER_VERTEX * n
+    attributes = ATTRIBUTE_BYTES_PER_VERTEX * n + ATTRIBUTE_BYTES_PER_FACE * f
     report("[repeated, new mesh each time] %d calls; RSS after call 10: %.1f MB, after call %d: %.1f MB; %.0f KB "
            "per call, the attributes vcglib keeps of a deleted mesh: %.0f KB"
            % (CALLS, rss[9] / 2**20, CALLS, rss[-1] / 2**20, per_call / 1024, attributes / 1024))
