@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "filter/filter_options.h"
+#include "io/crease_lines_file.h"  // CreaseLinesNameError
 
 namespace nvv_cli {
 
@@ -143,10 +144,8 @@ inline std::string ParseArgs(int argc, const char* const* argv, CliArgs& a) {
     }
     if (name == "crease_lines") {
       if (!takeValue(a.creaseLines)) return "option --crease_lines needs a value";
-      const std::string lower = Lower(a.creaseLines);
-      const std::string ext = lower.size() >= 4 ? lower.substr(lower.size() - 4) : std::string();
-      if (ext != ".obj" && ext != ".ply")
-        return "the crease lines file name must end in .obj or .ply (got '" + a.creaseLines + "')";
+      const std::string bad = nvv::CreaseLinesNameError(a.creaseLines);
+      if (!bad.empty()) return bad;
       continue;
     }
     const nvv::ParamSpec* spec = nvv::FindParam(name);

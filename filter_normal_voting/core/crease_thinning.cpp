@@ -76,15 +76,9 @@ bool OnSharpEdge(const SurfaceGraph& g, const std::vector<VertexResult>& res, in
 // edges of a bounded number of evenly spread faces.
 double MedianEdgeAngle(const SurfaceGraph& g) {
   std::vector<float> angles;
-  const int stride = std::max(1, g.FaceCount() / tuning::kMedianEdgeAngleFaces);
-  for (int f = 0; f < g.FaceCount(); f += stride) {
-    if (!(g.faceArea[f] > 0)) continue;
-    for (int j = 0; j < 3; ++j)
-      g.ForEachFaceAcross(f, g.face[f][j], g.face[f][(j + 1) % 3], [&](int o) {  // each edge once, from its lower face
-        if (o > f && g.faceArea[o] > 0)
-          angles.push_back(float(std::acos(std::max(-1.0, std::min(1.0, g.faceNormal[f].dot(g.faceNormal[o]))))));
-      });
-  }
+  g.ForEachSampledEdgePair([&](int f, int o, int, int) {
+    angles.push_back(float(std::acos(std::max(-1.0, std::min(1.0, g.faceNormal[f].dot(g.faceNormal[o]))))));
+  });
   if (angles.empty()) return 0;
   std::nth_element(angles.begin(), angles.begin() + angles.size() / 2, angles.end());
   return angles[angles.size() / 2];
@@ -95,21 +89,6 @@ double MedianEdgeAngle(const SurfaceGraph& g) {
 double CosSharpEdgeAngle(const SurfaceGraph& g, double creaseAngleDeg) {
   const double sharpAngle = std::max(DegToRad(creaseAngleDeg), tuning::kSharpOverMedianEdgeAngle * MedianEdgeAngle(g));
   return std::cos(std::min(sharpAngle, DegToRad(tuning::kSharpAngleMaxDeg)));
-}
-
-// Makes feature vertex v a SURFACE vertex whose normal restarts from its one-ring's (off the
-// ridge its faces lie on one sheet, while pass 1's E1 there mixes both); returns 1, or 0 when v
-// has no one-ring normal (then it stays as it is).
-int DemoteToSurface(const SurfaceGraph& g, VertexResult& r, int v) {
-  Eigen::Vector3d ring = g.RingNormalSum(v);
-  if (!(ring.squaredNorm() > 0)) return 0;
-  ring.normalize();
-  for (int j = 0; j < 3; ++j) r.normal[j] = float(ring[j]);
-  r.cls = VertexClass::Surface;
-  r.flags = std::uint8_t((r.flags & ~kCreaseValid) | kNormalValid);
-  for (int j = 0; j < 3; ++j) r.creaseTangent[j] = 0;
-  r.cuspAngle = 0;
-  return 1;
 }
 
 // True when ridge candidate v is not the ridge of its band: a one-ring candidate across v's
@@ -201,6 +180,18 @@ RidgeFitResult StrongerRidgeFit(const SurfaceGraph& g, const VertexResult& r, in
 }
 
 }  // namespace
+
+int DemoteToSurface(const SurfaceGraph& g, VertexResult& r, int v) {
+  Eigen::Vector3d ring = g.RingNormalSum(v);
+  if (!(ring.squaredNorm() > 0)) return 0;
+  ring.normalize();
+  for (int j = 0; j < 3; ++j) r.normal[j] = float(ring[j]);
+  r.cls = VertexClass::Surface;
+  r.flags = std::uint8_t((r.flags & ~kCreaseValid) | kNormalValid);
+  for (int j = 0; j < 3; ++j) r.creaseTangent[j] = 0;
+  r.cuspAngle = 0;
+  return 1;
+}
 
 PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res, const Pass1Settings& s,
                     double creaseAngleDeg, int threads, PassProgress& progress, std::vector<RidgeScore>& ridge) {

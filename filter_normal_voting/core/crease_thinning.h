@@ -46,6 +46,11 @@ struct RidgeScore {
   float alphaRad = 0;
 };
 
+// Makes feature vertex v a SURFACE vertex whose normal restarts from its one-ring's (off the
+// ridge its faces lie on one sheet, while pass 1's E1 there mixes both); returns 1, or 0 when v
+// has no one-ring normal (then it stays as it is). Also used by the sharp edges (sharp_edges.h).
+int DemoteToSurface(const SurfaceGraph& g, VertexResult& r, int v);
+
 // Thins the band by the configured form (Params::thinCreases, Params::ridgeFit), scoring the
 // ridges first where the ridge fit is used. `thinned`: feature vertices removed, net of gaps
 // closed.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "crease_thinning.h"  // DemoteToSurface
 #include "tuning.h"
 
 namespace nvv {
@@ -15,14 +16,17 @@ bool RunsFromTo(const std::array<int, 3>& t, int a, int b) {
   return (t[0] == a && t[1] == b) || (t[1] == a && t[2] == b) || (t[2] == a && t[0] == b);
 }
 
-// The dihedral angle (radians) between faces f and o across their edge (a, b): the angle between
-// their normals, with o's flipped where the two faces run along the edge the same way (a mesh
-// whose orientation is not consistent, as STL files often are, would otherwise show a 180 deg
-// crease at every flipped face).
+// Face o's normal as if o were oriented like f, its neighbour across the edge (a, b): flipped
+// where the two faces run along the edge the same way (a mesh whose orientation is not
+// consistent, as STL files often are, would otherwise show a 180 deg crease at every flipped face).
+Eigen::Vector3d NormalOrientedLike(const SurfaceGraph& g, int f, int o, int a, int b) {
+  return RunsFromTo(g.face[f], a, b) == RunsFromTo(g.face[o], a, b) ? Eigen::Vector3d(-g.faceNormal[o])
+                                                                      : g.faceNormal[o];
+}
+
+// The dihedral angle (radians) between faces f and o across their edge (a, b).
 double EdgeAngle(const SurfaceGraph& g, int f, int o, int a, int b) {
-  double c = g.faceNormal[f].dot(g.faceNormal[o]);
-  if (RunsFromTo(g.face[f], a, b) == RunsFromTo(g.face[o], a, b)) c = -c;
-  return std::acos(std::max(-1.0, std::min(1.0, c)));
+  return std::acos(std::max(-1.0, std::min(1.0, g.faceNormal[f].dot(NormalOrientedLike(g, f, o, a, b)))));
 }
 
 // The mesh's noise angle: the lowest tenth of the dihedral angles over the edges of at most
@@ -30,16 +34,7 @@ double EdgeAngle(const SurfaceGraph& g, int f, int o, int a, int b) {
 // hold flat edges; 0.2 deg under 1 % noise, 0.85 deg under 5 %.
 double MeshNoiseAngle(const SurfaceGraph& g) {
   std::vector<double> angles;
-  const int stride = std::max(1, g.FaceCount() / tuning::kMedianEdgeAngleFaces);
-  for (int f = 0; f < g.FaceCount(); f += stride) {
-    if (!(g.faceArea[f] > 0)) continue;
-    for (int j = 0; j < 3; ++j) {
-      const int a = g.face[f][j], b = g.face[f][(j + 1) % 3];
-      g.ForEachFaceAcross(f, a, b, [&](int o) {
-        if (o > f && g.faceArea[o] > 0) angles.push_back(EdgeAngle(g, f, o, a, b));
-      });
-    }
-  }
+  g.ForEachSampledEdgePair([&](int f, int o, int a, int b) { angles.push_back(EdgeAngle(g, f, o, a, b)); });
   if (angles.empty()) return 0;
   std::nth_element(angles.begin(), angles.begin() + angles.size() / 10, angles.end());
   return angles[angles.size() / 10];
@@ -123,8 +118,7 @@ SharpVerdict JudgeVertex(const SurfaceGraph& g, int v, const Thresholds& t) {
         else if (std::abs(dir.dot(firstDir)) < tuning::kCosSameLine) corner = true;
         if (dir.dot(firstDir) < 0) dir = -dir;
         tangent += dir;
-        const bool flipped = RunsFromTo(g.face[f], v, x) == RunsFromTo(g.face[o], v, x);
-        normal += g.faceNormal[f] + (flipped ? -g.faceNormal[o] : g.faceNormal[o]);
+        normal += g.faceNormal[f] + NormalOrientedLike(g, f, o, v, x);
         cusp += theta;
         ++count;
       });
@@ -149,17 +143,7 @@ SharpVerdict JudgeVertex(const SurfaceGraph& g, int v, const Thresholds& t) {
 // Writes a verdict onto v's result; true when v's class changed.
 bool Apply(const SurfaceGraph& g, int v, const SharpVerdict& s, VertexResult& r) {
   const VertexClass want = VertexClass(s.cls);
-  if (want == VertexClass::Surface) {
-    if (!IsFeature(r)) return false;
-    Eigen::Vector3d ring = g.RingNormalSum(v);  // off the crease a vertex's faces lie on one sheet
-    if (!(ring.squaredNorm() > 0)) return false;
-    ring.normalize();
-    for (int j = 0; j < 3; ++j) r.normal[j] = float(ring[j]), r.creaseTangent[j] = 0;
-    r.cls = VertexClass::Surface;
-    r.flags = std::uint8_t((r.flags & ~kCreaseValid) | kNormalValid);
-    r.cuspAngle = 0;
-    return true;
-  }
+  if (want == VertexClass::Surface) return IsFeature(r) && DemoteToSurface(g, r, v) == 1;
   const bool changed = r.cls != want;
   r.cls = want;
   if (want == VertexClass::Corner) {

@@ -104,6 +104,23 @@ struct SurfaceGraph {
     }
   }
 
+  // Calls fn(f, o, a, b) for every face o with an area across an edge (a, b) of a face f with an area,
+  // f one of at most tuning::kMedianEdgeAngleFaces evenly spread faces, each pair once (o > f): the
+  // sample the mesh-wide statistics of dihedral angles are taken over.
+  template <class Fn>
+  void ForEachSampledEdgePair(Fn fn) const {
+    const int stride = std::max(1, FaceCount() / tuning::kMedianEdgeAngleFaces);
+    for (int f = 0; f < FaceCount(); f += stride) {
+      if (!(faceArea[f] > 0)) continue;
+      for (int j = 0; j < 3; ++j) {
+        const int a = face[f][j], b = face[f][(j + 1) % 3];
+        ForEachFaceAcross(f, a, b, [&](int o) {
+          if (o > f && faceArea[o] > 0) fn(f, o, a, b);
+        });
+      }
+    }
+  }
+
   // True when v has an edge that only one face holds: v is on the mesh's border.
   bool OnBorder(int v) const;
 

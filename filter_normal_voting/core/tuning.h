@@ -111,7 +111,8 @@ constexpr double kCosSameLine = 0.7;
 constexpr double kSharpOverMedianEdgeAngle = 5.0;
 // ... and never above this many degrees (the cosine must stay above -1).
 constexpr double kSharpAngleMaxDeg = 179.0;
-// The median edge angle is estimated from the edges of at most this many evenly spread faces.
+// The mesh-wide dihedral-angle statistics (the median edge angle here, the noise angle of
+// sharp_edges.h) are estimated from the edges of at most this many evenly spread faces.
 constexpr int kMedianEdgeAngleFaces = 100000;
 
 // --- The quadric fit (sheet_fit.h) -------------------------------------------------------------

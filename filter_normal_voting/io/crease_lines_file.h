@@ -28,15 +28,28 @@
 
 namespace nvv {
 
+// The format a crease-lines file name asks for: ".obj" or ".ply" (the extension in any case), or
+// empty when it names neither.
+inline std::string CreaseLinesFormat(const std::string& path) {
+  std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".obj" || ext == ".ply" ? ext : std::string();
+}
+
+// Empty when `path` names a crease-lines file; otherwise the sentence that refuses it.
+inline std::string CreaseLinesNameError(const std::string& path) {
+  return CreaseLinesFormat(path).empty() ? "the crease lines file name must end in .obj or .ply (got '" + path + "')"
+                                         : std::string();
+}
+
 // Writes the lines of `crease` (vertex indices into m.vert) to `path`, .obj or .ply by its
 // extension. On failure returns false, sets `error` to one sentence and removes a partial
 // regular file.
 template <class MeshType>
 bool WriteCreaseLines(const std::string& path, const MeshType& m, const CreaseOutputs& crease, std::string& error) {
-  std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".obj" && ext != ".ply") {
-    error = "the crease lines file name must end in .obj or .ply (got '" + path + "')";
+  const std::string ext = CreaseLinesFormat(path);
+  if (ext.empty()) {
+    error = CreaseLinesNameError(path);
     return false;
   }
   const std::vector<CreaseLine>& lines = crease.net.lines;

@@ -57,10 +57,16 @@ bool ReadPlyLines(const std::string& path, std::size_t& vertices, std::vector<nv
   return true;
 }
 
+// Writes m as dir's in.ply; returns its path, or an empty string when it could not be written.
+std::string SaveInput(nvv_test::TMesh& m, const TempDir& dir) {
+  const std::string input = dir.File("in.ply");
+  return vcg::tri::io::ExporterPLY<nvv_test::TMesh>::Save(m, input.c_str(), 0, true) == 0 ? input : std::string();
+}
+
 NetworkFiles RunOn(nvv_test::TMesh& m) {
   TempDir dir;
-  const std::string input = dir.File("in.ply");
-  EXPECT_EQ(0, vcg::tri::io::ExporterPLY<nvv_test::TMesh>::Save(m, input.c_str(), 0, true));
+  const std::string input = SaveInput(m, dir);
+  EXPECT_FALSE(input.empty());
   NetworkFiles f;
   f.cli = RunCli({"--crease_lines", dir.File("lines.obj"), input, dir.File("out.ply")}, dir);
   EXPECT_EQ(0, f.cli.exitCode) << f.cli.err;
@@ -150,8 +156,8 @@ TEST(CliCreaseNetwork, OffLeavesTheFileAsBefore) {
   nvv_test::TMesh m;
   nvv_shapes::Cube(m, 5.0, 9);
   TempDir dir;
-  const std::string input = dir.File("in.ply");
-  ASSERT_EQ(0, vcg::tri::io::ExporterPLY<nvv_test::TMesh>::Save(m, input.c_str(), 0, true));
+  const std::string input = SaveInput(m, dir);
+  ASSERT_FALSE(input.empty());
   const CliResult r = RunCli({"--crease_edges", "false", input, dir.File("out.ply")}, dir);
   ASSERT_EQ(0, r.exitCode) << r.err;
   EXPECT_EQ(std::string::npos, r.out.find("Crease network")) << r.out;
@@ -178,8 +184,8 @@ TEST(CliCreaseNetwork, AnUnwritableLinesFileIsRefusedBeforeAnyWork) {
   nvv_test::TMesh m;
   nvv_shapes::Cube(m, 5.0, 5);
   TempDir dir;
-  const std::string input = dir.File("in.ply");
-  ASSERT_EQ(0, vcg::tri::io::ExporterPLY<nvv_test::TMesh>::Save(m, input.c_str(), 0, true));
+  const std::string input = SaveInput(m, dir);
+  ASSERT_FALSE(input.empty());
   const CliResult r = RunCli({"--crease_lines", "/nonexistent/dir/lines.obj", input, dir.File("out.ply")}, dir);
   EXPECT_EQ(5, r.exitCode);
   EXPECT_NE(std::string::npos, r.err.find("cannot write the crease lines")) << r.err;
