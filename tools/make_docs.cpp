@@ -7,7 +7,8 @@
 // Usage: nvv_docgen FILE.md            rewrites the blocks in place
 //        nvv_docgen --check FILE.md    exits 1 (and says which block) when a block is out of date
 //        nvv_docgen --print parameters|mlx|help|json
-// `--print json` is the parameter table as JSON, for programs outside C++ (the Python tests):
+// `--print json` is the MeshLab filter's parameter table as JSON, for programs outside C++ (the
+// Python tests):
 //   {"filter": ..., "python_name": ..., "parameters": [{"name", "type" (float|int|bool|enum),
 //    "label", "help", "default", "min", "max", "choices", "tokens", "advanced"}, ...],
 //    "save_file": {"name", "label", "help"}}
@@ -46,9 +47,9 @@ std::string RangeText(const nvv::ParamSpec& p) {
 std::string ParameterTable() {
   std::ostringstream s;
   s << "| name | label | default | values | meaning |\n|---|---|---|---|---|\n";
-  for (const auto& p : nvv::FilterParameterTable())
+  for (const auto& p : nvv::MeshLabParameterTable())
     s << "| `" << p.name << "` | " << p.label << " | " << DefaultText(p) << " | " << RangeText(p) << " | " << p.help
-      << " |\n";
+      << (nvv::FindParam(p.name) ? "" : " MeshLab and scripts only.") << " |\n";
   const nvv::SaveFileSpec& save = nvv::ResultPlyParameter();
   s << "| `" << save.name << "` | " << save.label << " | (empty) | a file name | " << save.help
     << " MeshLab and scripts only: the command-line tool always writes this file. |\n";
@@ -86,7 +87,7 @@ std::string ParameterJson() {
   std::ostringstream s;
   s << "{\n  \"filter\": " << JsonString(nvv::kFilterName) << ",\n  \"python_name\": "
     << JsonString(nvv::kPythonFilterName) << ",\n  \"parameters\": [\n";
-  const auto& table = nvv::FilterParameterTable();
+  const auto& table = nvv::MeshLabParameterTable();
   for (std::size_t i = 0; i < table.size(); ++i) {
     const nvv::ParamSpec& p = table[i];
     s << "    {\"name\": " << JsonString(p.name) << ", \"type\": \"" << kTypes[int(p.type)] << "\", \"label\": "

@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const std::size_t eq = a.find('=');
-    if (eq == std::string::npos || !nvv::FindParam(a.substr(0, eq))) {
+    if (eq == std::string::npos || !nvv::FindParam(a.substr(0, eq), nvv::MeshLabParameterTable())) {
       std::fprintf(stderr, "nvv_mlx: expected name=value with a parameter name of the filter, got '%s'\n", argv[i]);
       return 2;
     }

@@ -149,6 +149,9 @@ inline std::string ParseArgs(int argc, const char* const* argv, CliArgs& a) {
       continue;
     }
     const nvv::ParamSpec* spec = nvv::FindParam(name);
+    if (!spec && name == "crease_lines_layer")
+      return "--crease_lines_layer is the MeshLab filter's (a new layer); this tool writes the lines to a file: "
+             "--crease_lines FILE.obj|.ply";
     if (!spec) return "unknown option '--" + name + "' (see nvv --help)";
     std::string text;
     if (!takeValue(text)) return "option --" + name + " needs a value";

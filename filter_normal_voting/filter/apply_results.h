@@ -26,7 +26,7 @@
 
 namespace nvv {
 
-// Names of the per-vertex attributes the filter adds (float, or Point3 of the mesh scalar).
+// Names of the attributes the filter adds (per vertex unless said; the mesh's scalar, or its Point3).
 struct AttributeNames {
   static const char* Class() { return "nvv_class"; }
   static const char* SurfaceSaliency() { return "nvv_surface_saliency"; }
@@ -36,6 +36,7 @@ struct AttributeNames {
   static const char* CreaseCurvature() { return "nvv_crease_curvature"; }
   static const char* CreaseTangent() { return "nvv_crease_tangent"; }    // Point3
   static const char* Patch() { return "nvv_patch"; }                     // per face; -1: no patch
+  static const char* Line() { return "nvv_line"; }                       // per edge of the lines layer
 };
 
 // The quality value of one vertex; `valid` false when it has none for this mode.

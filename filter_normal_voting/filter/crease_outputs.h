@@ -79,6 +79,43 @@ CreaseOutputs FindCreaseOutputs(const MeshType& m, const SurfaceGraph& g, const 
   return out;
 }
 
+// The crease lines as an edge list over their own vertices, for the lines file and MeshLab's
+// lines layer: the mesh vertices the lines pass through, each once, in the order the lines first
+// reach them; each line's edges in order along it (a closed line's last edge returns to its first
+// vertex), so the edges of line l are those with line == l.
+struct CreaseLineEdges {
+  struct Edge {
+    int a, b;          // indices into meshVertex
+    float cuspAngle;   // radians
+    int line;
+  };
+  std::vector<int> meshVertex;
+  std::vector<std::vector<int>> polylines;  // per line, indices into meshVertex along it
+  std::vector<Edge> edges;
+};
+
+inline CreaseLineEdges LinesAsEdges(const CreaseOutputs& c, std::size_t meshVertexCount) {
+  CreaseLineEdges out;
+  const std::vector<CreaseLine>& lines = c.net.lines;
+  std::vector<int> index(meshVertexCount, -1);
+  out.polylines.resize(lines.size());
+  for (std::size_t l = 0; l < lines.size(); ++l)
+    for (int v : lines[l].vertices) {
+      if (index[v] < 0) index[v] = int(out.meshVertex.size()), out.meshVertex.push_back(v);
+      out.polylines[l].push_back(index[v]);
+    }
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const std::vector<int>& pl = out.polylines[l];
+    const std::size_t n = pl.size();
+    for (std::size_t i = 0; i + 1 < n + (lines[l].closed ? 1 : 0); ++i) {
+      const int a = pl[i], b = pl[(i + 1) % n];
+      const int e = c.EdgeIndex(out.meshVertex[a], out.meshVertex[b]);
+      out.edges.push_back({a, b, e >= 0 ? c.net.edgeCuspAngle[e] : 0.0f, int(l)});
+    }
+  }
+  return out;
+}
+
 // One log line: edges, lines, their corners, patches.
 inline std::string CreaseNetworkLine(const CreaseOutputs& c) {
   char buf[512];

@@ -132,6 +132,20 @@ const std::vector<ParamSpec>& FilterParameterTable() {
   return table;
 }
 
+const std::vector<ParamSpec>& MeshLabParameterTable() {
+  static const std::vector<ParamSpec> table = [] {
+    std::vector<ParamSpec> t = FilterParameterTable();
+    t.push_back({"crease_lines_layer", ParamType::Bool, "Crease lines as a new layer",
+                 "Also add a layer holding the crease lines as an edge mesh (one colour per line, corners in the "
+                 "corner colour; per-edge attributes nvv_line and nvv_cusp_angle in degrees), named after the mesh "
+                 "with \" crease lines\". The mesh stays the current layer. Implies the crease network. The "
+                 "command-line tool writes the same lines to a file (--crease_lines).",
+                 0.0, 0, 1, {}, {}, false});
+    return t;
+  }();
+  return table;
+}
+
 const SaveFileSpec& ResultPlyParameter() {
   static const SaveFileSpec spec = {
       "save_results_ply", "Save all results to PLY (optional)",
@@ -141,14 +155,14 @@ const SaveFileSpec& ResultPlyParameter() {
   return spec;
 }
 
-const ParamSpec* FindParam(const std::string& name) {
-  for (const auto& p : FilterParameterTable())
+const ParamSpec* FindParam(const std::string& name, const std::vector<ParamSpec>& table) {
+  for (const auto& p : table)
     if (name == p.name) return &p;
   return nullptr;
 }
 
 std::string SetOption(FilterOptions& o, const std::string& name, double value) {
-  const ParamSpec* spec = FindParam(name);
+  const ParamSpec* spec = FindParam(name, MeshLabParameterTable());
   if (!spec) return "Unknown parameter '" + name + "'.";
   if (!std::isfinite(value)) return std::string("Parameter '") + spec->name + "' is not a finite number.";
   if (spec->type == ParamType::Enum && (value != std::floor(value) || value < 0 || value >= double(spec->choices.size())))
@@ -184,6 +198,7 @@ std::string SetOption(FilterOptions& o, const std::string& name, double value) {
   else if (name == "selection") o.selection = SelectionMode(iv);
   else if (name == "max_neighbourhood") o.core.maxNeighbourhood = iv;
   else if (name == "crease_edges") o.creaseEdges = value != 0;
+  else if (name == "crease_lines_layer") o.creaseLinesLayer = value != 0;
   return std::string();
 }
 
@@ -206,6 +221,7 @@ double GetOption(const FilterOptions& o, const std::string& name) {
   if (name == "selection") return int(o.selection);
   if (name == "max_neighbourhood") return o.core.maxNeighbourhood;
   if (name == "crease_edges") return o.creaseEdges ? 1 : 0;
+  if (name == "crease_lines_layer") return o.creaseLinesLayer ? 1 : 0;
   return std::nan("");
 }
 

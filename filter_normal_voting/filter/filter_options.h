@@ -35,10 +35,13 @@ struct FilterOptions {
   double clampPercentile = 2.0;  // the quality ramp spans the p-th to (100-p)-th percentile
   SelectionMode selection = SelectionMode::None;
   bool creaseEdges = true;       // crease edges, lines and patches (crease_network.h) after the run
+  bool creaseLinesLayer = false; // MeshLab only: the crease lines as a new layer (crease_lines_layer.h)
 };
 
 // True when the run must find the crease network: its edges, or the patches to colour.
-inline bool WantsCreaseNetwork(const FilterOptions& o) { return o.creaseEdges || o.color == ColorMode::Patches; }
+inline bool WantsCreaseNetwork(const FilterOptions& o) {
+  return o.creaseEdges || o.creaseLinesLayer || o.color == ColorMode::Patches;
+}
 
 enum class ParamType { Float, Int, Bool, Enum };
 
@@ -57,7 +60,12 @@ struct ParamSpec {
 // Every parameter of the filter, in the order of the dialog.
 const std::vector<ParamSpec>& FilterParameterTable();
 
-// The one parameter only the MeshLab filter has: a file to write the full-result PLY to (see
+// The parameters of the MeshLab filter (both APIs, .mlx scripts, PyMeshLab): the table above plus
+// what only MeshLab can do with a result, the crease lines as a new layer (crease_lines_layer),
+// which the command-line tool writes to a file instead (--crease_lines).
+const std::vector<ParamSpec>& MeshLabParameterTable();
+
+// The other parameter only the MeshLab filter has: a file to write the full-result PLY to (see
 // filter_normal_voting/io/result_ply.h), because MeshLab's own PLY writer cannot save curvature
 // directions or the per-vertex results from a script. The command-line tool always writes it.
 struct SaveFileSpec {
@@ -67,10 +75,10 @@ struct SaveFileSpec {
 };
 const SaveFileSpec& ResultPlyParameter();
 
-// The table's entry of parameter `name`, or null.
-const ParamSpec* FindParam(const std::string& name);
+// The entry of parameter `name` in `table`, or null.
+const ParamSpec* FindParam(const std::string& name, const std::vector<ParamSpec>& table = FilterParameterTable());
 
-// Sets option `name` from a number (Bool: 0/1, Enum: index). Returns an error sentence, or
+// Sets option `name` (any of MeshLabParameterTable()) from a number (Bool: 0/1, Enum: index). Returns an error sentence, or
 // empty when set. Values outside the table's range are refused here, not clamped.
 std::string SetOption(FilterOptions& o, const std::string& name, double value);
 

@@ -32,7 +32,7 @@ inline std::string XmlEscape(const std::string& s) {
 inline std::string MlxFilterElement(const std::map<std::string, std::string>& values = {}) {
   std::ostringstream x;
   x << " <filter name=\"" << XmlEscape(kFilterName) << "\">\n";
-  for (const auto& p : FilterParameterTable()) {
+  for (const auto& p : MeshLabParameterTable()) {
     std::string v;
     const auto it = values.find(p.name);
     if (it != values.end()) {

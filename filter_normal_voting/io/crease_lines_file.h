@@ -53,14 +53,9 @@ bool WriteCreaseLines(const std::string& path, const MeshType& m, const CreaseOu
     return false;
   }
   const std::vector<CreaseLine>& lines = crease.net.lines;
-  // The lines' vertices, each once, and each line as indices into them.
-  std::vector<int> fileIndex(m.vert.size(), -1), vertices;
-  std::vector<std::vector<int>> polylines(lines.size());
-  for (std::size_t l = 0; l < lines.size(); ++l)
-    for (int v : lines[l].vertices) {
-      if (fileIndex[v] < 0) fileIndex[v] = int(vertices.size()), vertices.push_back(v);
-      polylines[l].push_back(fileIndex[v]);
-    }
+  const CreaseLineEdges le = LinesAsEdges(crease, m.vert.size());
+  const std::vector<int>& vertices = le.meshVertex;
+  const std::vector<std::vector<int>>& polylines = le.polylines;
   auto position = [&](int fileVertex) {
     char buf[96];
     const auto& p = m.vert[vertices[fileVertex]].cP();
@@ -87,19 +82,12 @@ bool WriteCreaseLines(const std::string& path, const MeshType& m, const CreaseOu
     }
   } else {
     std::string body;
-    std::size_t edges = 0;
-    for (std::size_t l = 0; l < lines.size(); ++l) {
-      const std::vector<int>& pl = polylines[l];
-      const std::size_t n = pl.size();
-      for (std::size_t i = 0; i + 1 < n + (lines[l].closed ? 1 : 0); ++i) {
-        const int a = pl[i], b = pl[(i + 1) % n];
-        const int e = crease.EdgeIndex(vertices[a], vertices[b]);
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "%d %d %.9g %zu\n", a, b, e >= 0 ? double(crease.net.edgeCuspAngle[e]) : 0.0, l);
-        body += buf;
-        ++edges;
-      }
+    for (const CreaseLineEdges::Edge& e : le.edges) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "%d %d %.9g %d\n", e.a, e.b, double(e.cuspAngle), e.line);
+      body += buf;
     }
+    const std::size_t edges = le.edges.size();
     out += "ply\nformat ascii 1.0\ncomment Normal Vector Voting crease lines\n";
     out += "element vertex " + std::to_string(vertices.size()) + "\n";
     out += "property float x\nproperty float y\nproperty float z\n";

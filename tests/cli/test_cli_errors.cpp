@@ -76,6 +76,8 @@ TEST_F(CliErrors, UnsupportedExtensionIs3) {
 TEST_F(CliErrors, BadArgumentsAre2) {
   ExpectFailure(2, {"--no_such_option", "1", good_, Out()}, "--no_such_option");
   ExpectFailure(2, {"-x", good_, Out()}, "-x");
+  // MeshLab's lines layer has no meaning here: the message names the tool's lines file instead.
+  ExpectFailure(2, {"--crease_lines_layer", "true", good_, Out()}, "--crease_lines FILE");
   ExpectFailure(2, {"--neighbourhood_k", "-1", good_, Out()}, "neighbourhood_k");
   ExpectFailure(2, {"--neighbourhood_k", "0", good_, Out()});
   ExpectFailure(2, {"--crease_angle", "120", good_, Out()}, "crease_angle");

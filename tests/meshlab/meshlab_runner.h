@@ -25,6 +25,14 @@ class MVertex : public vcg::Vertex<MTypes, vcg::vertex::Coord3f, vcg::vertex::No
 class MFace : public vcg::Face<MTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
 class MMesh : public vcg::tri::TriMesh<std::vector<MVertex>, std::vector<MFace>> {};
 
+// An edge mesh, for reading a polyline layer or a crease-lines file.
+class EVertex;
+class EEdge;
+struct ETypes : vcg::UsedTypes<vcg::Use<EVertex>::AsVertexType, vcg::Use<EEdge>::AsEdgeType> {};
+class EVertex : public vcg::Vertex<ETypes, vcg::vertex::Coord3f, vcg::vertex::Color4b, vcg::vertex::BitFlags> {};
+class EEdge : public vcg::Edge<ETypes, vcg::edge::VertexRef, vcg::edge::BitFlags> {};
+class EMesh : public vcg::tri::TriMesh<std::vector<EVertex>, std::vector<EEdge>> {};
+
 inline std::string Prefix() { return NVV_MESHLAB_PREFIX; }
 inline std::string TempDir() {
   static std::string dir;
@@ -58,11 +66,12 @@ inline ServerRun RunServer(const std::string& in, const std::string& out, const 
   return r;
 }
 
-inline bool ReadPly(const std::string& path, MMesh& m) {
+template <class MeshType>
+bool ReadPly(const std::string& path, MeshType& m) {
   m.Clear();
   int mask = 0;
-  vcg::tri::io::ImporterPLY<MMesh>::LoadMask(path.c_str(), mask);
-  return vcg::tri::io::ImporterPLY<MMesh>::Open(m, path.c_str(), mask) == 0;
+  vcg::tri::io::ImporterPLY<MeshType>::LoadMask(path.c_str(), mask);
+  return vcg::tri::io::ImporterPLY<MeshType>::Open(m, path.c_str(), mask) == 0;
 }
 
 }  // namespace nvv_ml

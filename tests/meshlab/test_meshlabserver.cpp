@@ -191,7 +191,8 @@ TEST(MeshLabServer, EveryParameterIsHonoured) {
     EXPECT_GT(MaxQualityDiff(base, m), 1e-3);
     EXPECT_NE(std::string::npos, r.output.find("neighbourhood cap")) << r.output;
   });
-  for (const auto& p : nvv::FilterParameterTable()) EXPECT_TRUE(covered.count(p.name)) << "no test for parameter " << p.name;
+  covered.insert("crease_lines_layer");  // CreaseLinesLayerHoldsTheLinesOfTheLinesFile
+  for (const auto& p : nvv::MeshLabParameterTable()) EXPECT_TRUE(covered.count(p.name)) << "no test for parameter " << p.name;
 }
 
 // The crease edges are the faces' edge selection: MeshLab's own "Build a Polyline from Selected
@@ -213,6 +214,42 @@ TEST(MeshLabServer, CreaseEdgesChainIntoAPolylineLayer) {
   for (const auto& e : d.edges) onEdges.insert(e.vertex[0]), onEdges.insert(e.vertex[1]);
   EXPECT_GT(onEdges.size(), 100u);
   EXPECT_EQ(onEdges.size(), layer.vert.size());
+}
+
+// crease_lines_layer: the lines become a layer of their own, the mesh stays the current layer, and
+// the layer holds the vertices of the lines the command-line tool writes to its lines file, in order.
+TEST(MeshLabServer, CreaseLinesLayerHoldsTheLinesOfTheLinesFile) {
+  // Without a change of layer the mesh is what meshlabserver saves: the layer was added behind it.
+  ServerRun r = RunServer(kCad, Out("lines_layer_mesh"), nvv::MlxScript({{"crease_lines_layer", "true"}}));
+  ASSERT_EQ(0, r.exitCode) << r.output;
+  EXPECT_NE(std::string::npos, r.output.find("crease lines' holds the")) << r.output;
+  MMesh mesh, input;
+  ASSERT_TRUE(ReadPly(Out("lines_layer_mesh"), mesh));
+  ASSERT_TRUE(ReadPly(kCad, input));
+  EXPECT_EQ(input.vert.size(), mesh.vert.size());
+  EXPECT_EQ(input.face.size(), mesh.face.size());
+  // Layer 1 made current and saved.
+  const std::string toLayer =
+      " <filter name=\"Change the current layer\">\n"
+      "  <Param name=\"layer\" type=\"RichMesh\" value=\"1\" description=\"Layer Name\"/>\n"
+      " </filter>\n";
+  r = RunServer(kCad, Out("lines_layer"), nvv::MlxScript({{"crease_lines_layer", "true"}}, toLayer), "vc");
+  ASSERT_EQ(0, r.exitCode) << r.output;
+  EMesh layer, file;
+  ASSERT_TRUE(ReadPly(Out("lines_layer"), layer));
+  const std::string linesFile = TempDir() + "/lines_layer_cli.ply";
+  const std::string cmd = std::string(NVV_CLI) + " --quiet --crease_lines '" + linesFile + "' '" + kCad + "' '" +
+                          TempDir() + "/lines_layer_cli_full.ply'";
+  ASSERT_EQ(0, std::system(cmd.c_str())) << cmd;
+  ASSERT_TRUE(ReadPly(linesFile, file));
+  // meshlabserver 2020.09 saves no edges (PyMeshLab's test reads the layer's edges): the vertices.
+  ASSERT_GT(file.edge.size(), 100u);
+  ASSERT_EQ(file.vert.size(), layer.vert.size());
+  for (std::size_t i = 0; i < file.vert.size(); ++i) ASSERT_EQ(file.vert[i].cP(), layer.vert[i].cP()) << i;
+  // One colour per line: more than one colour among the layer's vertices.
+  std::set<unsigned> colours;
+  for (const auto& v : layer.vert) colours.insert(unsigned(v.cC()[0]) | unsigned(v.cC()[1]) << 8 | unsigned(v.cC()[2]) << 16);
+  EXPECT_GT(colours.size(), 2u);
 }
 
 TEST(MeshLabServer, RefusedInputExitsNonZeroWithTheReason) {

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <set>
 #include <thread>
+#include <tuple>
 
 #include "filter/apply_results.h"
 #include "core/normal_vector_voting.h"
@@ -111,7 +112,7 @@ TEST(ScriptedUse, FilterIsFoundByItsPythonNameWithTheTablesParameters) {
   EXPECT_EQ(QString::fromUtf8(nvv::kFilterName), f.meshlabFunctionName());
   // Every parameter of the table, under its own name as keyword, with its default (PyMeshLab
   // lower-cases the MeshLab name, which already is lower case).
-  const auto& table = nvv::FilterParameterTable();
+  const auto& table = nvv::MeshLabParameterTable();
   EXPECT_GE(f.parametersNumber(), table.size());
   for (const auto& spec : table) {
     const QString name = QString::fromUtf8(spec.name);
@@ -322,7 +323,55 @@ TEST(ScriptedUse, EveryParameterIsHonoured) {
     EXPECT_GT(MaxQualityDiff(base, r), 1e-3);
     EXPECT_GT(r.dict.at("capped_vertices").toInt(), 0);
   });
-  for (const auto& p : nvv::FilterParameterTable()) EXPECT_TRUE(covered.count(p.name)) << "no test for parameter " << p.name;
+  covered.insert("crease_lines_layer");  // CreaseLinesLayerHoldsEveryCreaseEdgeOnce
+  for (const auto& p : nvv::MeshLabParameterTable()) EXPECT_TRUE(covered.count(p.name)) << "no test for parameter " << p.name;
+}
+
+// crease_lines_layer: a new layer after the mesh, which stays current, holding each crease edge of
+// the network once (the count in the dict), between vertices at the mesh's positions, coloured per
+// line, with the per-edge attributes nvv_line and nvv_cusp_angle; the mesh is the same as without it.
+TEST(ScriptedUse, CreaseLinesLayerHoldsEveryCreaseEdgeOnce) {
+  Session s;
+  NewSession(s);
+  MeshModel& m = s.LoadNewMesh(Cad());
+  const int meshId = m.id();
+  const Dict d = s.Apply(kPy, {{"crease_lines_layer", true}});
+  ASSERT_EQ(2u, std::size_t(s.md.meshNumber()));
+  EXPECT_EQ(meshId, s.md.mm()->id());
+  const MeshModel* layer = nullptr;
+  for (const MeshModel& mm : s.md.meshIterator())
+    if (mm.id() != meshId) layer = &mm;
+  ASSERT_NE(nullptr, layer);
+  EXPECT_NE(std::string::npos, layer->label().toStdString().find("crease lines")) << layer->label().toStdString();
+  const CMeshO& em = layer->cm;
+  EXPECT_EQ(0, em.fn);
+  EXPECT_EQ(d.at("crease_edge_count").toInt(), em.en);
+  ASSERT_GT(em.en, 100);
+  std::set<std::pair<int, int>> edges;
+  std::set<std::tuple<float, float, float>> onMesh, colours;
+  for (const auto& v : m.cm.vert) onMesh.insert(std::make_tuple(float(v.cP()[0]), float(v.cP()[1]), float(v.cP()[2])));
+  for (const auto& v : em.vert) {
+    EXPECT_TRUE(onMesh.count(std::make_tuple(float(v.cP()[0]), float(v.cP()[1]), float(v.cP()[2]))));
+    colours.insert(std::make_tuple(float(v.cC()[0]), float(v.cC()[1]), float(v.cC()[2])));
+  }
+  EXPECT_GT(colours.size(), 2u);
+  auto line = vcg::tri::Allocator<CMeshO>::FindPerEdgeAttribute<Scalarm>(const_cast<CMeshO&>(em), nvv::AttributeNames::Line());
+  auto cusp = vcg::tri::Allocator<CMeshO>::FindPerEdgeAttribute<Scalarm>(const_cast<CMeshO&>(em), nvv::AttributeNames::CuspAngle());
+  ASSERT_TRUE(vcg::tri::Allocator<CMeshO>::IsValidHandle(em, line));
+  ASSERT_TRUE(vcg::tri::Allocator<CMeshO>::IsValidHandle(em, cusp));
+  std::set<int> lines;
+  for (std::size_t i = 0; i < em.edge.size(); ++i) {
+    const int a = int(vcg::tri::Index(em, em.edge[i].cV(0))), b = int(vcg::tri::Index(em, em.edge[i].cV(1)));
+    EXPECT_TRUE(edges.insert(std::make_pair(std::min(a, b), std::max(a, b))).second) << "edge twice: " << a << " " << b;
+    lines.insert(int(line[i]));
+    EXPECT_GE(cusp[i], Scalarm(0));
+    EXPECT_LE(cusp[i], Scalarm(180));
+  }
+  EXPECT_EQ(d.at("crease_lines").toInt(), int(lines.size()));
+  // The mesh itself: as a run without the layer leaves it.
+  const RunResult plain = RunFilter({});
+  ASSERT_EQ(plain.position.size(), m.cm.vert.size());
+  for (std::size_t i = 0; i < m.cm.vert.size(); ++i) EXPECT_EQ(plain.colour[i], m.cm.vert[i].cC()) << i;
 }
 
 TEST(ScriptedUse, SavedPlyCarriesNormalsQualityAndColour) {

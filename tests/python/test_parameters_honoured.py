@@ -164,6 +164,30 @@ def check_crease_edges(base):
     assert off["crease_edge_count"] == 0 and off["patches"] == 0
 
 
+def check_crease_lines_layer(base):
+    # Off by default: no layer. On: a second layer after the mesh, which stays the current one,
+    # holding every crease edge once, between vertices of the mesh on the lines.
+    ms = load(CAD)
+    d = ms.compute_normal_vector_voting(crease_lines_layer=True)
+    assert ms.mesh_number() == 2 and ms.current_mesh_id() == 0
+    mesh, layer = ms.mesh(0), ms.mesh(1)
+    assert layer.face_number() == 0
+    assert layer.edge_number() == d["crease_edge_count"] == base["dict"]["crease_edge_count"]
+    on_mesh = {tuple(p) for p in mesh.vertex_matrix()}
+    assert all(tuple(p) in on_mesh for p in layer.vertex_matrix())
+    edges = layer.edge_matrix()
+    assert edges.min() >= 0 and edges.max() == layer.vertex_number() - 1
+    assert len({tuple(sorted(e)) for e in edges}) == layer.edge_number()  # each crease edge once
+    assert len(np.unique(layer.vertex_color_array())) > 2  # a colour per line
+    # Asked with crease_edges off, the layer still comes: it implies the network.
+    ms = load(CAD)
+    ms.compute_normal_vector_voting(crease_edges=False, crease_lines_layer=True)
+    assert ms.mesh_number() == 2 and ms.mesh(1).edge_number() == d["crease_edge_count"]
+    one = load(CAD)
+    one.compute_normal_vector_voting()
+    assert one.mesh_number() == 1
+
+
 def check_max_neighbourhood(base):
     r = run(max_neighbourhood=16)
     assert quality_diff(base, r) > 1e-3

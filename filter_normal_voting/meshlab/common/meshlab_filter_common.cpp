@@ -2,8 +2,11 @@
 
 #include <algorithm>
 
+#include <QFileInfo>
+
 #include <vcg/complex/algorithms/update/selection.h>
 
+#include "filter/crease_lines_layer.h"
 #include "filter/run_filter.h"
 
 namespace nvv_meshlab {
@@ -28,7 +31,7 @@ QString FilterInfo() {
 }
 
 void AddParameters(RichParameterList& par) {
-  for (const auto& p : nvv::FilterParameterTable()) {
+  for (const auto& p : nvv::MeshLabParameterTable()) {
     const QString name = QString::fromUtf8(p.name), label = QString::fromUtf8(p.label), help = QString::fromUtf8(p.help);
     switch (p.type) {
       case nvv::ParamType::Float: par.addParam(RichFloat(name, MESHLAB_SCALAR(p.defaultValue), label, help)); break;
@@ -56,7 +59,7 @@ QString ReadOptions(const RichParameterList& par, nvv::FilterOptions& options, Q
   options = nvv::DefaultOptions();
   const QString saveName = QString::fromUtf8(nvv::ResultPlyParameter().name);
   resultPly = par.hasParameter(saveName) ? par.getSaveFileName(saveName).trimmed() : QString();
-  for (const auto& p : nvv::FilterParameterTable()) {
+  for (const auto& p : nvv::MeshLabParameterTable()) {
     const QString name = QString::fromUtf8(p.name);
     if (!par.hasParameter(name)) continue;  // scripts written for an older version keep the defaults
     double value = 0;
@@ -87,8 +90,22 @@ int OutputMask(const nvv::FilterOptions* options) {
   return mask;
 }
 
-Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& resultPly, vcg::CallBackPos* cb) {
+// The crease lines as a new layer after mm (which stays the current one); its log line.
+QString AddCreaseLinesLayer(MeshDocument& md, MeshModel& mm, const nvv::CreaseOutputs& crease) {
+  if (crease.net.lines.empty()) return QStringLiteral("Normal vector voting: no crease lines, so no lines layer");
+  const QString label = QFileInfo(mm.label()).completeBaseName() + QStringLiteral(" crease lines");
+  MeshModel* layer = md.addNewMesh(QString(), label, false);
+  layer->updateDataMask(MeshModel::MM_VERTCOLOR);
+  nvv::BuildCreaseLinesLayer(mm.cm, crease, layer->cm);
+  return QStringLiteral("Normal vector voting: layer '%1' holds the %2 crease lines (%3 edges)")
+      .arg(label)
+      .arg(crease.net.lines.size())
+      .arg(layer->cm.en);
+}
+
+Outcome Run(MeshDocument& md, const nvv::FilterOptions& options, const QString& resultPly, vcg::CallBackPos* cb) {
   Outcome out;
+  MeshModel& mm = *md.mm();
   nvv::Progress progress;
 #ifdef NVV_MESHLAB_API_2025
   // 2022.02+ ignores the callback's result (no cancelling); PyMeshLab's may return false.
@@ -137,6 +154,7 @@ Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& res
       out.log << QStringLiteral("Normal vector voting: warning: ") + QString::fromStdString(run.error);
   }
   for (const auto& line : run.log) out.log << QString::fromStdString(line);
+  if (options.creaseLinesLayer) out.log << AddCreaseLinesLayer(md, mm, run.crease);
   for (const auto& w : run.warnings) out.log << QStringLiteral("Normal vector voting: warning: ") + QString::fromStdString(w);
   return out;
 }

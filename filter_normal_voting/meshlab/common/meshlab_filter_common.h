@@ -17,6 +17,7 @@
 
 #ifdef NVV_MESHLAB_API_2025
 // MeshLab 2022.02 and later: the document and the parameters have headers of their own.
+#include <common/ml_document/mesh_document.h>
 #include <common/ml_document/mesh_model.h>
 #include <common/parameters/rich_parameter_list.h>
 #else
@@ -35,7 +36,7 @@ QString PythonName();
 // The dialog's help: method, outputs and every parameter, in a user's words.
 QString FilterInfo();
 
-// Adds every parameter of the table, with its default, to the dialog.
+// Adds every parameter of nvv::MeshLabParameterTable(), with its default, to the dialog.
 void AddParameters(RichParameterList& par);
 
 // Reads the dialog's values into options (and the optional full-result PLY path); returns the
@@ -57,10 +58,11 @@ struct Outcome {
   int patches = 0, smallestPatch = 0, largestPatch = 0;
 };
 
-// Runs the filter on mm and, when resultPly is not empty, writes the full-result PLY there.
+// Runs the filter on md's current mesh and, when resultPly is not empty, writes the full-result
+// PLY there; with options.creaseLinesLayer, adds the crease lines as a new layer after it.
 // On failure (refused mesh, unwritable file, cancellation) the mesh is untouched.
 // Progress goes to cb from the calling thread only (the GUI pumps its event loop in it).
-Outcome Run(MeshModel& mm, const nvv::FilterOptions& options, const QString& resultPly, vcg::CallBackPos* cb);
+Outcome Run(MeshDocument& md, const nvv::FilterOptions& options, const QString& resultPly, vcg::CallBackPos* cb);
 
 // The run's summary as named values (PyMeshLab hands them to the script as a dict):
 // surface_vertices, crease_vertices, corner_vertices, unclassified_vertices, capped_vertices,

@@ -38,7 +38,7 @@ bool NormalVectorVotingPlugin::applyFilter(QAction*, MeshDocument& md, const Ric
   QString resultPly;
   const QString bad = nvv_meshlab::ReadOptions(par, options, resultPly);
   if (!bad.isEmpty()) return fail(QStringLiteral("Normal Vector Voting: ") + bad + QStringLiteral(" The mesh was not changed."));
-  const nvv_meshlab::Outcome out = nvv_meshlab::Run(*md.mm(), options, resultPly, cb);
+  const nvv_meshlab::Outcome out = nvv_meshlab::Run(md, options, resultPly, cb);
   if (!out.ok) return fail(out.error);
   for (const QString& line : out.log) Log(qUtf8Printable(line));
   return true;

@@ -44,7 +44,7 @@ std::map<std::string, QVariant> NormalVectorVotingPlugin::applyFilter(const QAct
   QString resultPly;
   const QString bad = nvv_meshlab::ReadOptions(par, options, resultPly);
   if (!bad.isEmpty()) fail(QStringLiteral("Normal Vector Voting: ") + bad + QStringLiteral(" The mesh was not changed."));
-  const nvv_meshlab::Outcome out = nvv_meshlab::Run(*md.mm(), options, resultPly, cb);
+  const nvv_meshlab::Outcome out = nvv_meshlab::Run(md, options, resultPly, cb);
   if (!out.ok) fail(out.error);
   for (const QString& line : out.log) log(line.toStdString());
   postConditionMask = nvv_meshlab::OutputMask(&options);
