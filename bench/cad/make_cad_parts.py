@@ -3,8 +3,8 @@
 them, with their sharp-feature truth taken from the CAD model. Input of the accuracy
 benchmark's "cad" section (bench/cad_parts.cpp).
 
-Usage: make_cad_parts.py OUTDIR
-Writes, for every part and mesh size, OUTDIR/<part>_<size>.obj and OUTDIR/<part>_<size>.truth,
+Usage: make_cad_parts.py OUTDIR [PART_SIZE ...]
+Writes, for every part and mesh size (or only those named, e.g. block_default), OUTDIR/<part>_<size>.obj and OUTDIR/<part>_<size>.truth,
 and OUTDIR/parts.txt (one "<part>_<size>" per line, in the order the benchmark reports them).
 Needs Debian bookworm's python3-gmsh (gmsh 4.8.4 with OpenCASCADE 7.6); deterministic for a
 given gmsh build (one meshing thread).
@@ -387,10 +387,12 @@ def mesh_part(name, build, size, out_dir, ksign, version):
 
 
 def main():
-    if len(sys.argv) != 2:
+    known = [name + "_" + size[0] for name, _ in PARTS for size in SIZES]
+    if len(sys.argv) < 2 or any(a not in known for a in sys.argv[2:]):
         print(next(l for l in __doc__.split("\n") if l.startswith("Usage")), file=sys.stderr)
+        print("PART_SIZE: one of " + " ".join(known), file=sys.stderr)
         return 2
-    out_dir = sys.argv[1]
+    out_dir, only = sys.argv[1], set(sys.argv[2:])
     os.makedirs(out_dir, exist_ok=True)
     gmsh.initialize(["make_cad_parts"], readConfigFiles=False)
     gmsh.option.setNumber("General.Terminal", 0)
@@ -400,6 +402,8 @@ def main():
     names = []
     for name, build in PARTS:
         for size in SIZES:
+            if only and name + "_" + size[0] not in only:
+                continue
             mesh_part(name, build, size, out_dir, ksign, version)
             names.append(name + "_" + size[0])
     with open(os.path.join(out_dir, "parts.txt"), "w") as f:

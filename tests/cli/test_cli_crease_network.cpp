@@ -63,10 +63,7 @@ std::string SaveInput(nvv_test::TMesh& m, const TempDir& dir) {
   return vcg::tri::io::ExporterPLY<nvv_test::TMesh>::Save(m, input.c_str(), 0, true) == 0 ? input : std::string();
 }
 
-NetworkFiles RunOn(nvv_test::TMesh& m) {
-  TempDir dir;
-  const std::string input = SaveInput(m, dir);
-  EXPECT_FALSE(input.empty());
+NetworkFiles RunOnFile(const std::string& input, const TempDir& dir) {
   NetworkFiles f;
   f.cli = RunCli({"--crease_lines", dir.File("lines.obj"), input, dir.File("out.ply")}, dir);
   EXPECT_EQ(0, f.cli.exitCode) << f.cli.err;
@@ -77,6 +74,23 @@ NetworkFiles RunOn(nvv_test::TMesh& m) {
   EXPECT_EQ(0, again.exitCode) << again.err;
   EXPECT_TRUE(ReadPlyLines(dir.File("lines.ply"), f.plyLineVertices, f.plyLineEdges));
   return f;
+}
+
+NetworkFiles RunOn(nvv_test::TMesh& m) {
+  TempDir dir;
+  const std::string input = SaveInput(m, dir);
+  EXPECT_FALSE(input.empty());
+  return RunOnFile(input, dir);
+}
+
+// The CAD benchmark's machined block (bench/cad/make_cad_parts.py, gmsh's OpenCASCADE kernel), at
+// mesh size `size`, as dir's block_<size>.obj; empty when python3-gmsh is not installed.
+std::string MakeCadBlock(const std::string& size, const TempDir& dir) {
+  if (std::system("/usr/bin/python3 -c 'import gmsh' > /dev/null 2>&1") != 0) return std::string();
+  const std::string cmd = "/usr/bin/python3 '" NVV_SOURCE_DIR "/bench/cad/make_cad_parts.py' '" + dir.Path() +
+                          "' block_" + size + " > '" + dir.File("gmsh.log") + "' 2>&1";
+  EXPECT_EQ(0, std::system(cmd.c_str())) << cmd;
+  return dir.File("block_" + size + ".obj");
 }
 
 std::set<int> Ids(const std::vector<int>& ids) {
@@ -149,6 +163,35 @@ TEST(CliCreaseNetwork, ACappedCylinderHasTwoClosedLinesAndThreePatches) {
   EXPECT_EQ(128u, f.plyLineVertices);
   EXPECT_NE(std::string::npos, f.cli.out.find("in 2 lines (2 closed, 0 corners at their ends); 3 patches of"))
       << f.cli.out;
+}
+
+// A box with fillets on its vertical edges, a 45 deg chamfer round its top and a through hole, made
+// and meshed by a CAD kernel: its sharp model curves close into 5 loops (top face | chamfer,
+// chamfer | sides, the bottom rim, the hole's two rims), with no corner, and they bound 5 smooth
+// patches (the top, the chamfer, the sides with their fillets, the bottom, the hole). The fillets'
+// boundaries are tangent: no line. At the CAD kernel's default and fine mesh sizes the network is
+// exact; at coarser sizes (few rows of faces on the fillets and the hole) the patches are.
+TEST(CliCreaseNetwork, ACadBlockWithFilletsAChamferAndAHoleHasFiveClosedLinesAndFivePatches) {
+  for (const std::string size : {"default", "fine", "coarse", "export"}) {
+    SCOPED_TRACE(size);
+    TempDir dir;
+    const std::string input = MakeCadBlock(size, dir);
+    if (input.empty()) GTEST_SKIP() << "python3-gmsh is not installed (apt-get install python3-gmsh)";
+    const NetworkFiles f = RunOnFile(input, dir);
+    ASSERT_EQ(f.ply.faces.size(), f.ply.facePatch.size());
+    EXPECT_EQ(5u, Ids(f.ply.facePatch).size());
+    if (size == "coarse" || size == "export") continue;
+    EXPECT_EQ(5u, LinesOf(f.ply.edges).size());
+    EXPECT_EQ(0u, CornersOnEdges(f.ply).size());
+    ASSERT_EQ(5u, f.objLines.size());
+    for (const auto& l : f.objLines) EXPECT_EQ(l.front(), l.back()) << "closed";
+    EXPECT_NE(std::string::npos, f.cli.out.find("in 5 lines (5 closed, 0 corners at their ends); 5 patches of"))
+        << f.cli.out;
+    for (const auto& e : f.ply.edges) {  // 45 deg (chamfer) or 90 deg (bottom rim, hole)
+      EXPECT_GT(e.cuspAngle, 0.6f);
+      EXPECT_LT(e.cuspAngle, 1.7f);
+    }
+  }
 }
 
 // Without the network the file is the one earlier versions wrote: no patch, no edge element.
