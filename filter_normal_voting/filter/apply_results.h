@@ -98,7 +98,7 @@ class ApplyResults {
   static Needs NeedsFor(const FilterOptions& o) {
     Needs n;
     n.quality = o.quality != QualityMode::Keep || o.color == ColorMode::QualityRamp;
-    n.color = o.color != ColorMode::Keep;
+    n.color = o.color != ColorMode::Keep && o.color != ColorMode::Patches;
     n.curvatureDir = true;
     n.faceColor = o.color == ColorMode::Patches;
     return n;
@@ -115,11 +115,12 @@ class ApplyResults {
     if (qmode != QualityMode::Keep && vcg::tri::HasPerVertexQuality(m)) Quality(m, res, qmode);
     if (o.color == ColorMode::Classes && vcg::tri::HasPerVertexColor(m)) ClassColors(m, res);
     if (o.color == ColorMode::QualityRamp && vcg::tri::HasPerVertexColor(m)) Ramp(m, res, qmode, o.clampPercentile);
-    if (o.selection != SelectionMode::None) Selection(m, res, o.selection);
+    if (o.selection != SelectionMode::None && o.selection != SelectionMode::CreaseLines) Selection(m, res, o.selection);
     if (vcg::tri::HasPerVertexCurvatureDir(m)) CurvatureDir(m, res);
     Attributes(m, res);
     if (!crease) return;
     if (o.creaseEdges && vcg::tri::HasPerFaceFlags(m)) CreaseEdgeSelection(m, *crease);
+    if (o.selection == SelectionMode::CreaseLines) LineVertexSelection(m, *crease);
     PatchAttribute(m, *crease);
     if (o.color == ColorMode::Patches) PatchColors(m, res, *crease);
   }
@@ -177,6 +178,13 @@ class ApplyResults {
       else m.vert[i].ClearS();
     }
   }
+  // The vertices at the ends of the crease edges, and only them.
+  static void LineVertexSelection(MeshType& m, const CreaseOutputs& c) {
+    for (auto& v : m.vert)
+      if (!v.IsD()) v.ClearS();
+    for (const auto& e : c.net.edges)
+      for (int v : e) m.vert[v].SetS();
+  }
   static void CurvatureDir(MeshType& m, const std::vector<VertexResult>& res) {
     for (std::size_t i = 0; i < m.vert.size(); ++i) {
       auto& v = m.vert[i];
@@ -228,9 +236,12 @@ class ApplyResults {
     auto patch = vcg::tri::Allocator<MeshType>::template GetPerFaceAttribute<ScalarType>(m, AttributeNames::Patch());
     for (std::size_t s = 0; s < m.face.size(); ++s) patch[s] = ScalarType(c.meshFacePatch[s]);
   }
-  // One colour per patch; a vertex takes its faces' patch colour when they all lie in one patch,
-  // else (on a line) the crease or corner colour; faces and vertices outside every patch the
-  // unclassified colour.
+  // One colour per patch, on the faces where the mesh has face colours (MeshLab then shows them:
+  // on a coarse CAD mesh nearly every vertex lies on a line, so only faces can show the patches)
+  // and its vertex colours are left as they were. A mesh without face colours (the command-line
+  // tool's) gets them on its vertices instead: a vertex takes its faces' patch colour when they
+  // all lie in one patch, else (on a line) the crease or corner colour. Faces and vertices outside
+  // every patch take the unclassified colour.
   static vcg::Color4b PatchColor(int patch, int count) {
     return patch < 0 ? ClassColor(VertexClass::Invalid) : vcg::Color4b::Scatter(count, patch, 0.55f, 0.95f);
   }
@@ -247,9 +258,11 @@ class ApplyResults {
         vp = vp == kNone || vp == p ? p : kSeveral;
       }
     }
-    if (vcg::tri::HasPerFaceColor(m))
+    if (vcg::tri::HasPerFaceColor(m)) {
       for (std::size_t s = 0; s < m.face.size(); ++s)
         if (!m.face[s].IsD()) m.face[s].C() = PatchColor(c.meshFacePatch[s], count);
+      return;
+    }
     if (!vcg::tri::HasPerVertexColor(m)) return;
     for (std::size_t i = 0; i < m.vert.size(); ++i) {
       if (m.vert[i].IsD()) continue;

@@ -92,8 +92,9 @@ std::vector<ParamSpec> OutputParameters() {
     {"color", ParamType::Enum, "Vertex colour",
      "Class colours: surface grey, crease red, corner blue, unclassified magenta. Quality ramp: the "
      "chosen quality as a red-to-blue ramp clamped at percentiles. Keep: leave colours alone. Patches: "
-     "one colour per smooth patch bounded by the crease lines, on the faces (where the mesh has face "
-     "colours) and on the vertices inside a patch; vertices on the lines in crease red or corner blue.",
+     "one colour per smooth patch bounded by the crease lines, on the faces, which MeshLab then shows "
+     "(vertex colours are left as they were); the command-line tool, whose PLY has no face colours, "
+     "colours the vertices inside each patch and those on the lines crease red or corner blue.",
      0.0, 0, 3, {"Class colours", "Quality ramp", "Keep", "Patches"}, {"classes", "ramp", "keep", "patches"}, false},
     {"color_clamp_percentile", ParamType::Float, "Ramp clamp percentile",
      "The quality ramp spans the p-th to the (100-p)-th percentile, so a few extreme values do not "
@@ -101,9 +102,11 @@ std::vector<ParamSpec> OutputParameters() {
      2.0, 0.0, limits::kMaxClampPercentile, {}, {}, true},
     {"selection", ParamType::Enum, "Select vertices",
      "Which vertices to select afterwards (replacing the current vertex selection), e.g. to protect "
-     "creases from a following smoothing filter.",
-     0.0, 0, 3, {"None (keep selection)", "Creases and corners", "Corners only", "Surface only"},
-     {"none", "creases", "corners", "surface"}, false},
+     "creases from a following smoothing or remeshing filter. Creases and corners: by their class; "
+     "vertices on crease lines: the ends of the crease edges, the lines with their gaps closed and spurs "
+     "dropped (finds the crease network).",
+     0.0, 0, 4, {"None (keep selection)", "Creases and corners", "Corners only", "Surface only", "Vertices on crease lines"},
+     {"none", "creases", "corners", "surface", "lines"}, false},
     {"crease_edges", ParamType::Bool, "Crease edges, lines and patches",
      "Find the mesh edges that lie on creases (from the two sheets the votes found, not from the "
      "dihedral angle alone), link them into crease lines that end at corners, at the border or close on "

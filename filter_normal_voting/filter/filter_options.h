@@ -25,7 +25,7 @@ enum class QualityMode : int {
   Class, CuspAngle, SurfaceSaliency, Keep
 };
 enum class ColorMode : int { Classes = 0, QualityRamp, Keep, Patches };
-enum class SelectionMode : int { None = 0, CreasesAndCorners, CornersOnly, SurfaceOnly };
+enum class SelectionMode : int { None = 0, CreasesAndCorners, CornersOnly, SurfaceOnly, CreaseLines };
 
 struct FilterOptions {
   Params core;
@@ -38,9 +38,9 @@ struct FilterOptions {
   bool creaseLinesLayer = false; // MeshLab only: the crease lines as a new layer (crease_lines_layer.h)
 };
 
-// True when the run must find the crease network: its edges, or the patches to colour.
+// True when the run must find the crease network: its edges, its lines, or the patches to colour.
 inline bool WantsCreaseNetwork(const FilterOptions& o) {
-  return o.creaseEdges || o.creaseLinesLayer || o.color == ColorMode::Patches;
+  return o.creaseEdges || o.creaseLinesLayer || o.color == ColorMode::Patches || o.selection == SelectionMode::CreaseLines;
 }
 
 enum class ParamType { Float, Int, Bool, Enum };

@@ -2,6 +2,7 @@
 // core run in-process with that option, differs from the defaults' file where the option has
 // an effect, and the visible outputs (selection, quality, colour, curvature) mean what they say.
 #include <functional>
+#include <set>
 
 #include "cli_test_support.h"
 
@@ -152,6 +153,18 @@ TEST_F(CliOptions, SelectionSelectsTheClasses) {
       EXPECT_GT(selected, 0u);
     }
   }
+}
+
+// Vertices on crease lines: exactly the ends of the crease edges, also with crease_edges off.
+TEST_F(CliOptions, SelectionOfLineVerticesIsTheEndsOfTheCreaseEdges) {
+  const nvv::ResultPlyData d = Run({"--selection", "lines"});
+  std::set<int> ends;
+  for (const auto& e : d.edges) ends.insert(e.vertex[0]), ends.insert(e.vertex[1]);
+  ASSERT_GT(ends.size(), 10u);
+  for (std::size_t i = 0; i < d.vertices.size(); ++i) EXPECT_EQ(ends.count(int(i)) == 1, d.vertices[i].selected == 1) << i;
+  const nvv::ResultPlyData off = Run({"--selection", "lines", "--crease_edges", "false"});
+  ASSERT_EQ(d.vertices.size(), off.vertices.size());
+  for (std::size_t i = 0; i < d.vertices.size(); ++i) EXPECT_EQ(d.vertices[i].selected, off.vertices[i].selected) << i;
 }
 
 TEST_F(CliOptions, QualityHoldsTheChosenValue) {

@@ -30,6 +30,8 @@ struct RunResult {
   std::vector<Point3m> normal, position;
   std::vector<bool> selected;
   std::vector<int> cls;
+  std::vector<std::tuple<int, int, int>> faceColour;  // empty without face colours
+  bool hasVertexColour = false;
 };
 
 RunResult RunFilter(const Kwargs& kwargs, const std::string& input = Cad()) {
@@ -50,6 +52,9 @@ RunResult RunFilter(const Kwargs& kwargs, const std::string& input = Cad()) {
     r.selected.push_back(v.IsS());
     r.cls.push_back(int(cls[i]));
   }
+  r.hasVertexColour = m.hasDataMask(MeshModel::MM_VERTCOLOR);
+  if (m.hasDataMask(MeshModel::MM_FACECOLOR))
+    for (const auto& f : m.cm.face) r.faceColour.emplace_back(f.cC()[0], f.cC()[1], f.cC()[2]);
   return r;
 }
 
@@ -289,9 +294,11 @@ TEST(ScriptedUse, EveryParameterIsHonoured) {
     EXPECT_EQ((std::set<Scalarm>{0, 1, 2}), values);
   });
   check("color", 1, [&](const RunResult& r) { EXPECT_GT(ColourDiffs(base, r), int(r.colour.size()) / 2); });
-  check("color", 3, [&](const RunResult& r) {  // patches: most vertices lie inside one
-    EXPECT_GT(ColourDiffs(base, r), int(r.colour.size()) / 2);
+  check("color", 3, [&](const RunResult& r) {  // patches: one colour per patch on the faces
+    std::set<std::tuple<int, int, int>> colours(r.faceColour.begin(), r.faceColour.end());
     EXPECT_GT(r.dict.at("patches").toInt(), 1);
+    EXPECT_EQ(std::size_t(r.dict.at("patches").toInt()), colours.size());
+    EXPECT_FALSE(r.hasVertexColour) << "vertex colours are left as they were: none";
   });
   check("crease_edges", 0, [&](const RunResult& r) {
     EXPECT_GT(base.dict.at("crease_edge_count").toInt(), 100);

@@ -133,10 +133,14 @@ def check_quality(base):
 def check_color(base):
     r = run(color="Quality ramp")
     assert colour_diffs(base, r) > len(r["color"]) // 2
-    # Patches: as many vertex colours (inside the patches) as patches, plus the lines' red and blue.
-    p = run(color="Patches")
-    colours = set(np.unique(p["color"]).tolist())  # packed ARGB, one per vertex
-    assert p["dict"]["patches"] <= len(colours) <= p["dict"]["patches"] + 2
+    # Patches: one colour per patch on the faces; the vertex colours as they were.
+    ms = load(CAD)
+    before = ms.current_mesh().vertex_color_array().copy()
+    d = ms.compute_normal_vector_voting(color="Patches")
+    m = ms.current_mesh()
+    assert m.has_face_color()
+    assert len(np.unique(m.face_color_array())) == d["patches"] > 1  # packed ARGB, one per face
+    assert np.array_equal(before, m.vertex_color_array())
 
 
 def check_color_clamp_percentile(base):
@@ -149,6 +153,10 @@ def check_selection(base):
     r = run(selection="Creases and corners")
     assert int(np.sum(r["selected"])) == count(r, CREASE, CORNER)
     assert int(np.sum(run(selection="Corners only")["selected"])) == count(r, CORNER)
+    # Vertices on crease lines: as many as the lines' layer has vertices.
+    ms = load(CAD)
+    ms.compute_normal_vector_voting(selection="Vertices on crease lines", crease_lines_layer=True)
+    assert int(np.sum(ms.mesh(0).vertex_selection_array())) == ms.mesh(1).vertex_number() > 10
 
 
 def check_crease_edges(base):

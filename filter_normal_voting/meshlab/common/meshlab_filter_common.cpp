@@ -86,7 +86,8 @@ int OutputMask(const nvv::FilterOptions* options) {
   int mask = MeshModel::MM_VERTNORMAL | MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR |
              MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_VERTCURVDIR;
   if (options && options->creaseEdges) mask |= MeshModel::MM_FACEFLAG;  // the faces' edge selection
-  if (options && options->color == nvv::ColorMode::Patches) mask |= MeshModel::MM_FACECOLOR;
+  // Patch colours are on the faces alone: declaring only them makes MeshLab show face colours.
+  if (options && options->color == nvv::ColorMode::Patches) mask = (mask & ~MeshModel::MM_VERTCOLOR) | MeshModel::MM_FACECOLOR;
   return mask;
 }
 

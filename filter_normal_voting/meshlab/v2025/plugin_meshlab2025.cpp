@@ -18,7 +18,9 @@ QString NormalVectorVotingPlugin::pythonFilterName(ActionIDType) const { return 
 QString NormalVectorVotingPlugin::filterInfo(ActionIDType) const { return nvv_meshlab::FilterInfo(); }
 
 FilterPlugin::FilterClass NormalVectorVotingPlugin::getClass(const QAction*) const {
-  return FilterClass(FilterPlugin::Normal | FilterPlugin::VertexColoring | FilterPlugin::Quality);
+  // Not VertexColoring: MeshLab would then show vertex colours after every run, also when the
+  // patch colours are on the faces; the run's postConditionMask says which colours it wrote.
+  return FilterClass(FilterPlugin::Normal | FilterPlugin::Quality);
 }
 
 FilterPlugin::FilterArity NormalVectorVotingPlugin::filterArity(const QAction*) const { return SINGLE_MESH; }
