@@ -35,6 +35,15 @@ else
   nvv_log "no nvv tool built: the comparison with the command-line tool is skipped"
 fi
 
+# The coarse CAD part the GUI test shows with its crease lines and patches (gmsh runs on the host).
+rm -rf "$work/reference/cad"
+if /usr/bin/python3 -c 'import gmsh' 2>/dev/null; then
+  step "CAD part for the GUI test"
+  /usr/bin/python3 "$nvv_repo/bench/cad/make_cad_parts.py" "$work/reference/cad" block_coarse > "$work/reference/gmsh.log"
+else
+  nvv_log "no python3-gmsh: the GUI test's crease-lines screenshot is skipped"
+fi
+
 step "MeshLab 2025.07 source"
 bash "$here/in-chroot.sh" fetch-meshlab-source.sh
 step "double-precision MeshLab 2025.07 core (-j$NVV_JOBS_CORE)"

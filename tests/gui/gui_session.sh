@@ -82,3 +82,17 @@ click_word() {
   xdotool mousemove $pos sleep 0.3 mousemove_relative 2 0 click 1
   sleep 1.5
 }
+
+# click_right_of WORD DX: clicks DX pixels right of the end of the first word WORD that OCR finds
+# (the check box of a dialog's parameter, whose label ends in WORD).
+click_right_of() {
+  import -window root "$out/.click.png"
+  /usr/bin/convert "$out/.click.png" -resize 200% "$out/.click2x.png"
+  local pos
+  pos=$(tesseract "$out/.click2x.png" - --psm 11 tsv 2>/dev/null |
+        awk -F'\t' -v w="$1" -v dx="$2" '$12 == w && !found { print int(($7 + $9) / 2) + dx, int(($8 + $10 / 2) / 2); found = 1 }')
+  [ -n "$pos" ] || { echo "gui smoke: '$1' not found on screen"; cp "$out/.click.png" "$out/not_found_$1.png"; exit 1; }
+  # shellcheck disable=SC2086
+  xdotool mousemove $pos sleep 0.3 click 1
+  sleep 1
+}

@@ -22,7 +22,7 @@ class MFace;
 struct MTypes : vcg::UsedTypes<vcg::Use<MVertex>::AsVertexType, vcg::Use<MFace>::AsFaceType> {};
 class MVertex : public vcg::Vertex<MTypes, vcg::vertex::Coord3f, vcg::vertex::Normal3f, vcg::vertex::Color4b,
                                    vcg::vertex::Qualityf, vcg::vertex::BitFlags> {};
-class MFace : public vcg::Face<MTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
+class MFace : public vcg::Face<MTypes, vcg::face::VertexRef, vcg::face::Color4b, vcg::face::BitFlags> {};
 class MMesh : public vcg::tri::TriMesh<std::vector<MVertex>, std::vector<MFace>> {};
 
 // An edge mesh, for reading a polyline layer or a crease-lines file.
