@@ -752,6 +752,10 @@ if net_summary:
               "clean export and coarse meshes: lines found, patches not")
     claim(ns("export", "10", "NVV defaults", "line_f1") < ns("export", "10", "MeshLab dihedral best", "line_f1") - 0.3,
           "noisy export meshes: the votes fail")
+    for fam in ("export", "coarse"):
+        small = [int(r["small_patches"]) for r in net_truth if r["family"] == fam and "small_patches" in r]
+        net_text["NET_SMALL_" + fam.upper()] = "%d" % sum(small) if small else "–"
+        net_text["NET_PATCHES_" + fam.upper()] = "%d" % sum(int(r["patches"]) for r in net_truth if r["family"] == fam)
     net_text["NET_PEERS_DIFF"] = f2(max(abs(ns(r["family"], r["noise"], "MeshLab dihedral best", c) -
                                             ns(r["family"], r["noise"], "CGAL sharp edges best", c))
                                         for r in net_summary for c in ("f1", "line_f1", "adjusted_rand")))
@@ -926,6 +930,29 @@ if all(os.path.exists(os.path.join(res, "cadpic_%s_%s_vertices.csv" % mt)) for m
                           dots=True)
     fig.tight_layout()
     fig.savefig(os.path.join(img_dir, "accuracy_cad_parts.png"), dpi=90)
+    plt.close(fig)
+
+# the crease networks: line F1 and ARI against noise, per mesh family
+if net_summary:
+    fams = [f for f in NET_FAMILIES if any(r["family"] == f for r in net_summary)]
+    fig, axes = plt.subplots(2, len(fams), figsize=(2.6 * len(fams), 5.2), squeeze=False)
+    styles = {"NVV defaults": ("-", 2.2), "NVV best phi": ("-", 1.0), "MeshLab dihedral 60": (":", 1.2),
+              "MeshLab dihedral best": ("--", 1.2), "CGAL sharp edges best": ("-.", 1.2)}
+    for j, fam in enumerate(fams):
+        for i, (col, label) in enumerate((("line_f1", "line F1"), ("adjusted_rand", "patches: ARI"))):
+            ax = axes[i][j]
+            for shown, (style, lw) in styles.items():
+                pts = sorted((float(r["noise"]), r[col]) for r in net_summary if r["family"] == fam and r["method"] == shown)
+                if pts:
+                    xs, ys = zip(*pts)
+                    ax.plot(xs, ys, style, marker="o", ms=3, lw=lw, label=shown)
+            ax.set_ylim(-0.05, 1.05)
+            ax.set_title("%s: %s" % (fam, label))
+            ax.set_xlabel("noise (% of l_ave)")
+            ax.grid(True, alpha=0.3)
+    axes[0][0].legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(os.path.join(img_dir, "accuracy_network.png"), dpi=90)
     plt.close(fig)
 
 # ---- the page

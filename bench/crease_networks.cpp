@@ -27,7 +27,8 @@
 //            1 l_ave from every found line; line F1: of the share of found lines on the truth
 //            and the share of true length covered; true lines at least half covered;
 //   patches  how many found against true; Rand index and adjusted Rand index of the faces'
-//            labels (every face counts once).
+//            labels (every face counts once). network_truth.csv also counts the true patches of
+//            fewer faces than the filter's network keeps apart (tuning::kMinPatchFaces).
 // Usage: nvv_bench_accuracy network OUTDIR PARTSDIR; writes OUTDIR/network.csv (one row per
 // mesh, noise, method and angle) and OUTDIR/network_truth.csv, and prints the truth's table.
 #include <algorithm>
@@ -45,6 +46,7 @@
 
 #include "crease_shapes.h"
 #include "estimators.h"
+#include "core/tuning.h"
 #include "filter/crease_outputs.h"
 #include "filter/filter_options.h"
 #include "mesh_files.h"
@@ -124,14 +126,12 @@ int FloodPatches(const PlainMesh& m, const std::vector<Edge>& creaseEdges, std::
   std::sort(faceEdges.begin(), faceEdges.end());
   std::vector<int> parent(m.face.size());
   std::iota(parent.begin(), parent.end(), 0);
-  for (std::size_t i = 0; i < faceEdges.size();) {
-    std::size_t j = i;
-    while (j < faceEdges.size() && faceEdges[j].first == faceEdges[i].first) ++j;
-    if (!std::binary_search(creaseEdges.begin(), creaseEdges.end(), faceEdges[i].first)) {
-      const int first = faceEdges[i].second;
-      for (std::size_t k = i + 1; k < j; ++k) parent[Find(parent, faceEdges[k].second)] = Find(parent, first);
-    }
-    i = j;
+  for (std::size_t i = 0; i < faceEdges.size();) {  // the faces of one mesh edge are adjacent
+    const Edge e = faceEdges[i].first;
+    const int first = faceEdges[i].second;
+    const bool joins = !std::binary_search(creaseEdges.begin(), creaseEdges.end(), e);
+    for (++i; i < faceEdges.size() && faceEdges[i].first == e; ++i)
+      if (joins) parent[Find(parent, faceEdges[i].second)] = Find(parent, first);
   }
   std::vector<int> label(m.face.size(), -1);
   int count = 0;
@@ -448,7 +448,7 @@ int RunNetworks(const std::string& outDir, const std::string& partsDir) {
           "family,mesh,noise,method,angle,edges_found,edges_true,precision,recall,f1,near_precision,near_recall,near_f1,"
           "lines_found,lines_true,lines_on_truth,true_lines_covered,hausdorff_mean,hausdorff_max,hausdorff_sym,gap_pct,"
           "line_f1,patches_found,patches_true,rand,adjusted_rand");
-  Csv tcsv(outDir, "network_truth.csv", "family,mesh,vertices,faces,l_ave,edges,lines,closed_lines,patches");
+  Csv tcsv(outDir, "network_truth.csv", "family,mesh,vertices,faces,l_ave,edges,lines,closed_lines,patches,small_patches");
   std::printf("| family | mesh | vertices | faces | true crease edges | true lines | true patches |\n"
               "|---|---|---|---|---|---|---|\n");
   for (const auto& bp : meshes) {
@@ -458,10 +458,15 @@ int RunNetworks(const std::string& outDir, const std::string& partsDir) {
     const Network truth = FromSelectedEdges(c0.plain, b.trueEdges);
     int closed = 0;
     for (const auto& l : truth.lines) closed += l.size() > 2 && l.front() == l.back();
+    // true patches smaller than the filter's network keeps apart (tiny ones it merges as noise)
+    std::vector<int> patchFaces(std::size_t(truth.patches), 0);
+    for (int p : truth.facePatch) ++patchFaces[p];
+    const int small = int(std::count_if(patchFaces.begin(), patchFaces.end(),
+                                        [](int n) { return n < nvv::tuning::kMinPatchFaces; }));
     std::printf("| %s | %s | %zu | %zu | %zu | %zu | %d |\n", b.family.c_str(), b.name.c_str(), c0.plain.pos.size(),
                 c0.plain.face.size(), truth.edges.size(), truth.lines.size(), truth.patches);
-    std::fprintf(tcsv.f(), "%s,%s,%zu,%zu,%g,%zu,%zu,%d,%d\n", b.family.c_str(), b.name.c_str(), c0.plain.pos.size(),
-                 c0.plain.face.size(), lave, truth.edges.size(), truth.lines.size(), closed, truth.patches);
+    std::fprintf(tcsv.f(), "%s,%s,%zu,%zu,%g,%zu,%zu,%d,%d,%d\n", b.family.c_str(), b.name.c_str(), c0.plain.pos.size(),
+                 c0.plain.face.size(), lave, truth.edges.size(), truth.lines.size(), closed, truth.patches, small);
     for (double noise : noises) {
       TMesh m;
       vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, const_cast<TMesh&>(b.clean));
