@@ -9,6 +9,8 @@
 //             estimates, for bench/python_peers.py (smooth.cpp)
 //   cad       parts made by gmsh's OpenCASCADE kernel and the ABC model: crease F1 and the
 //             surfaces next to creases (cad_parts.cpp); needs PARTSDIR, bench/cad/make_cad_parts.py's output
+//   network   crease edges, lines and patches against the truth on the crease shapes, the CAD
+//             parts and the ABC model (crease_networks.cpp); needs PARTSDIR as cad does
 // Prints markdown tables; writes CSV files for the plots into OUTDIR.
 #include <cstdio>
 #include <string>
@@ -17,7 +19,7 @@
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: %s grids|variants|f1|near|real|export OUTDIR | cad OUTDIR PARTSDIR\n", argv[0]);
+    std::fprintf(stderr, "usage: %s grids|variants|f1|near|real|export OUTDIR | cad|network OUTDIR PARTSDIR\n", argv[0]);
     return 2;
   }
   const std::string s = argv[1], out = argv[2];
@@ -26,6 +28,7 @@ int main(int argc, char** argv) {
   if (s == "real") return nvv_bench::RunReal(out);
   if (s == "export") return nvv_bench::ExportSmooth(out);
   if (s == "cad" && argc >= 4) return nvv_bench::RunCad(out, argv[3]);
+  if (s == "network" && argc >= 4) return nvv_bench::RunNetworks(out, argv[3]);
   std::fprintf(stderr, "unknown section %s\n", s.c_str());
   return 2;
 }

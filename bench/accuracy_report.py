@@ -13,8 +13,10 @@ Placeholders in the template:
   {{v:FILE|KEY1|KEY2|KEY3|COLUMN}}  one value of one row of a CSV file: FILE is smooth_grids,
                                     smooth_variants or creases_near (keys: shape, noise, estimator),
                                     creases_f1 (shape, noise, method), real_f1 (mesh, noise,
-                                    method) or python_peers (section, shape, noise, estimator: four
-                                    keys); COLUMN a column of that file. Printed as in the tables.
+                                    method), python_peers (section, shape, noise, estimator: four
+                                    keys), network (mesh, noise, method, angle: four keys) or
+                                    network_summary (family, noise, method); COLUMN a column of
+                                    that file. Printed as in the tables.
 Claims the prose makes about the numbers are checked by `claim()`: a claim the data no longer
 supports stops the script with the claim's text, so the page cannot silently go stale.
 """
@@ -571,6 +573,193 @@ claim(cad("default", "10", "NVV defaults") - cad("default", "10", "MeshLab dihed
       cad("fine", "20", "NVV defaults") - cad("fine", "20", "MeshLab dihedral best"),
       "the gap grows with the noise")
 
+# ---- section "network" (bench/crease_networks.cpp): crease edges, lines and patches against the
+# truth. Its per-mesh CSV beside the page, a summary per mesh family and noise level
+# (network_summary.csv, for {{v:network_summary|FAMILY|NOISE|METHOD|COLUMN}}) and the tables.
+# "best" picks each method's angle per mesh and noise level by the score of the measure shown
+# (edges: F1, lines: line F1, patches: adjusted Rand), the lowest angle on ties: an oracle.
+net = rows("network.csv")
+net_truth = rows("network_truth.csv")
+for name in ("network.csv", "network_truth.csv"):
+    if os.path.exists(os.path.join(res, name)):
+        with open(os.path.join(res, name)) as f_in, open(os.path.join(csv_dir, name), "w") as f_out:
+            f_out.write(f_in.read())
+NET_FAMILIES = ["synthetic", "export", "coarse", "default", "fine", "ABC"]
+NET_NOISES = ["0", "1", "5", "10", "20"]
+NET_SCORE = {"edges": "f1", "lines": "line_f1", "patches": "adjusted_rand"}
+# shown name -> (method in network.csv, angle or None for the best)
+NET_METHODS = {"NVV defaults": ("NVV defaults", "60"), "NVV best phi": ("NVV phi", None),
+               "MeshLab dihedral 60": ("MeshLab dihedral", "60"), "MeshLab dihedral best": ("MeshLab dihedral", None),
+               "CGAL sharp edges 60": ("CGAL sharp edges", "60"), "CGAL sharp edges best": ("CGAL sharp edges", None)}
+PEERS_60 = ("MeshLab dihedral 60", "CGAL sharp edges 60")
+PEERS_BEST = ("MeshLab dihedral best", "CGAL sharp edges best")
+net_runs = defaultdict(list)  # (family, mesh, noise) -> rows
+for r in net:
+    net_runs[(r["family"], r["mesh"], r["noise"])].append(r)
+
+
+def net_pick(runs, shown, group):
+    """The row of method `shown` for measure group `group` on one mesh at one noise level."""
+    method, angle = NET_METHODS[shown]
+    cand = [r for r in runs if r["method"] == method and (angle is None or r["angle"] == angle)]
+    return min(cand, key=lambda r: (-fnum(r[NET_SCORE[group]]), fnum(r["angle"])))
+
+
+def net_mean(xs):
+    xs = [x for x in xs if math.isfinite(x)]
+    return sum(xs) / len(xs) if xs else float("nan")
+
+
+net_summary = []
+for fam in NET_FAMILIES:
+    for noise in NET_NOISES:
+        keys = [k for k in net_runs if k[0] == fam and k[2] == noise]
+        if not keys:
+            continue
+        for shown in NET_METHODS:
+            e = [net_pick(net_runs[k], shown, "edges") for k in keys]
+            l = [net_pick(net_runs[k], shown, "lines") for k in keys]
+            p = [net_pick(net_runs[k], shown, "patches") for k in keys]
+            net_summary.append({
+                "family": fam, "noise": noise, "method": shown, "meshes": len(keys),
+                "f1": net_mean([fnum(r["f1"]) for r in e]), "near_f1": net_mean([fnum(r["near_f1"]) for r in e]),
+                "line_f1": net_mean([fnum(r["line_f1"]) for r in l]),
+                "lines_found": sum(int(r["lines_found"]) for r in l), "lines_true": sum(int(r["lines_true"]) for r in l),
+                "lines_on_truth": sum(int(r["lines_on_truth"]) for r in l),
+                "hausdorff_mean": net_mean([fnum(r["hausdorff_mean"]) for r in l]),
+                "gap_pct": net_mean([fnum(r["gap_pct"]) for r in l]),
+                "patches_found": sum(int(r["patches_found"]) for r in p), "patches_true": sum(int(r["patches_true"]) for r in p),
+                "rand": net_mean([fnum(r["rand"]) for r in p]), "adjusted_rand": net_mean([fnum(r["adjusted_rand"]) for r in p])})
+if net_summary:
+    with open(os.path.join(csv_dir, "network_summary.csv"), "w") as f_out:
+        w = csv.DictWriter(f_out, list(net_summary[0].keys()), lineterminator="\n")
+        w.writeheader()
+        w.writerows(net_summary)
+INDEX["network_summary"] = {(r["family"], r["noise"], r["method"]): {k: str(v) for k, v in r.items()} for r in net_summary}
+INDEX["network"] = {(r["mesh"], r["noise"], r["method"], r["angle"]): r for r in net}
+
+
+def net_sum(fam, noise, shown):
+    return INDEX["network_summary"][(fam, noise, shown)]
+
+
+def net_cells(shown_list, cell):
+    out = []
+    for fam in NET_FAMILIES:
+        for noise in NET_NOISES:
+            if (fam, noise, shown_list[0]) in INDEX["network_summary"]:
+                out.append([fam, noise + " %"] + [cell(net_sum(fam, noise, s)) for s in shown_list])
+    return out
+
+
+NET_SHOWN = ["NVV defaults", "NVV best phi", "MeshLab dihedral 60", "MeshLab dihedral best", "CGAL sharp edges best"]
+head_net_scores = table(["meshes", "noise"] + NET_SHOWN, net_cells(NET_SHOWN, lambda r: "%s / %s / %s" % (
+    f2(fnum(r["f1"])), f2(fnum(r["line_f1"])), f2(fnum(r["adjusted_rand"])))))
+NET_DETAIL = ["NVV defaults", "MeshLab dihedral 60", "MeshLab dihedral best", "CGAL sharp edges best"]
+head_net_lines = table(["meshes", "noise"] + NET_DETAIL, net_cells(NET_DETAIL, lambda r: "%s/%s (%s on), %s, %s %%" % (
+    r["lines_found"], r["lines_true"], r["lines_on_truth"], fmt(fnum(r["hausdorff_mean"])), fmt(fnum(r["gap_pct"])))))
+head_net_patches = table(["meshes", "noise"] + NET_DETAIL, net_cells(NET_DETAIL, lambda r: "%s/%s, %s / %s" % (
+    r["patches_found"], r["patches_true"], f2(fnum(r["rand"])), f2(fnum(r["adjusted_rand"])))))
+head_net_truth = ""
+if os.path.exists(os.path.join(res, "network.md")):
+    head_net_truth = "\n".join(l for l in open(os.path.join(res, "network.md")).read().strip().split("\n")
+                               if not l.startswith("<!--"))
+
+# Per mesh: the defaults' line F1 and adjusted Rand against the better of the two peers, at
+# 60 deg and at their best angle; counted per noise level ("wins" strictly better, "ties"
+# within 0.005).
+net_wins = {}
+net_lost = defaultdict(list)  # noise -> meshes where the defaults are below a peer at its best angle
+for noise in NET_NOISES:
+    keys = [k for k in net_runs if k[2] == noise]
+    c = Counter()
+    for k in keys:
+        for g in ("lines", "patches"):
+            col = NET_SCORE[g]
+            ours = fnum(net_pick(net_runs[k], "NVV defaults", g)[col])
+            ours_best = fnum(net_pick(net_runs[k], "NVV best phi", g)[col])
+            at60 = max(fnum(net_pick(net_runs[k], s, g)[col]) for s in PEERS_60)
+            best = max(fnum(net_pick(net_runs[k], s, g)[col]) for s in PEERS_BEST)
+            c[g, "60", "win"] += ours > at60 + 0.005
+            c[g, "60", "tie"] += abs(ours - at60) <= 0.005
+            c[g, "best", "win"] += ours > best + 0.005
+            c[g, "best", "tie"] += abs(ours - best) <= 0.005
+            c[g, "phi", "win"] += ours_best > best + 0.005
+            c[g, "phi", "tie"] += abs(ours_best - best) <= 0.005
+            if ours < best - 0.005:
+                net_lost[noise].append((k[1], g))
+    net_wins[noise] = (len(keys), c)
+
+
+def wins_cell(noise, g, vs):
+    n, c = net_wins[noise]
+    return "%d + %d of %d" % (c[g, vs, "win"], c[g, vs, "tie"], n)
+
+
+head_net_wins = table(
+    ["noise", "lines: defaults vs peers at 60°", "lines: defaults vs peers' best", "lines: best φ vs peers' best",
+     "patches: defaults vs peers at 60°", "patches: defaults vs peers' best", "patches: best φ vs peers' best"],
+    [[noise + " %"] + [wins_cell(noise, g, vs) for g in ("lines", "patches") for vs in ("60", "best", "phi")]
+     for noise in NET_NOISES if noise in net_wins])
+net_text = {"HEAD_NET_SCORES": head_net_scores, "HEAD_NET_LINES": head_net_lines, "HEAD_NET_PATCHES": head_net_patches,
+            "HEAD_NET_TRUTH": head_net_truth, "HEAD_NET_WINS": head_net_wins}
+for noise in NET_NOISES:
+    if noise in net_wins:
+        n, c = net_wins[noise]
+        for g in ("lines", "patches"):
+            for vs in ("60", "best", "phi"):
+                net_text["NET_%s_%s_%s" % (g.upper(), vs.upper(), noise)] = "%d" % (c[g, vs, "win"] + c[g, vs, "tie"])
+                net_text["NET_%s_%s_%s_WIN" % (g.upper(), vs.upper(), noise)] = "%d" % c[g, vs, "win"]
+        net_text["NET_MESHES"] = "%d" % n
+net_seconds = os.path.join(res, "network_seconds.txt")
+net_text["NET_SECONDS"] = open(net_seconds).read().strip() if os.path.exists(net_seconds) else "–"
+
+
+# claims of the page's "Crease lines and patches"
+def ns(fam, noise, shown, col):
+    return val("network_summary", fam, noise, shown, col)
+
+
+if net_summary:
+    for fam in ("synthetic", "default", "fine", "ABC"):
+        claim(all(ns(fam, "0", "NVV defaults", c) >= max(ns(fam, "0", p, c) for p in PEERS_BEST) - 0.02 and
+                  ns(fam, "0", "NVV defaults", c) > ns(fam, "0", "MeshLab dihedral 60", c) for c in ("f1", "line_f1", "adjusted_rand")),
+              "clean default, fine, ABC meshes and crease shapes: as good as the dihedral tests at their best angle, above them at 60°")
+    for fam in ("synthetic", "fine", "ABC"):
+        claim(all(ns(fam, "20", "NVV defaults", c) > ns(fam, "20", "MeshLab dihedral best", c) + 0.1 for c in ("line_f1", "f1")),
+              "at 20 % the defaults' lines and edges beat the peers' best on the fine meshes, the crease shapes and the ABC model")
+    claim(ns("fine", "20", "NVV defaults", "lines_found") * 5 < ns("fine", "20", "MeshLab dihedral best", "lines_found"),
+          "at 20 % the peers' selections shatter into many more lines than the defaults'")
+    claim(abs(ns("fine", "10", "NVV defaults", "patches_found") - ns("fine", "10", "NVV defaults", "patches_true")) * 5 <
+          abs(ns("fine", "10", "MeshLab dihedral best", "patches_found") - ns("fine", "10", "NVV defaults", "patches_true")),
+          "the defaults' patch count stays near the true one under noise")
+    claim(all(net_wins[n][1]["lines", "best", "win"] + net_wins[n][1]["lines", "best", "tie"] < net_wins[n][0] and
+              net_wins[n][1]["patches", "best", "win"] + net_wins[n][1]["patches", "best", "tie"] < net_wins[n][0]
+              for n in ("10", "20")), "the issue's bar is not met at 10 % and 20 %")
+    claim(ns("ABC", "10", "NVV best phi", "line_f1") > ns("ABC", "10", "MeshLab dihedral best", "line_f1") and
+          ns("ABC", "10", "NVV best phi", "adjusted_rand") > ns("ABC", "10", "MeshLab dihedral best", "adjusted_rand") and
+          ns("ABC", "10", "NVV defaults", "adjusted_rand") < 0.5,
+          "the ABC model at 10 %: the filter at its best angle catches the shallow curves the defaults leave out, above the peers' best")
+    roof = INDEX["network"].get(("roof 175°", "5", "NVV defaults", "60"))
+    claim(roof is not None and roof["lines_found"] == "1" and roof["patches_found"] == "1" and fnum(roof["gap_pct"]) < 5,
+          "the 175° roof: its one line found, but one patch for two")
+    claim(ns("ABC", "10", "MeshLab dihedral best", "patches_found") > 20 * ns("ABC", "10", "MeshLab dihedral best", "patches_true") and
+          ns("default", "10", "NVV defaults", "adjusted_rand") < ns("default", "10", "MeshLab dihedral best", "adjusted_rand"),
+          "the peers over-select into specks that ARI forgives; the defaults' merges cost more")
+    for fam in ("export", "coarse"):
+        claim(ns(fam, "0", "NVV defaults", "line_f1") >= 0.95 and
+              ns(fam, "0", "NVV defaults", "adjusted_rand") < ns(fam, "0", "MeshLab dihedral best", "adjusted_rand") - 0.1,
+              "clean export and coarse meshes: lines found, patches not")
+    claim(ns("export", "10", "NVV defaults", "line_f1") < ns("export", "10", "MeshLab dihedral best", "line_f1") - 0.3,
+          "noisy export meshes: the votes fail")
+    for fam in ("export", "coarse"):
+        small = [int(r["small_patches"]) for r in net_truth if r["family"] == fam and "small_patches" in r]
+        net_text["NET_SMALL_" + fam.upper()] = "%d" % sum(small) if small else "–"
+        net_text["NET_PATCHES_" + fam.upper()] = "%d" % sum(int(r["patches"]) for r in net_truth if r["family"] == fam)
+    net_text["NET_PEERS_DIFF"] = f2(max(abs(ns(r["family"], r["noise"], "MeshLab dihedral best", c) -
+                                            ns(r["family"], r["noise"], "CGAL sharp edges best", c))
+                                        for r in net_summary for c in ("f1", "line_f1", "adjusted_rand")))
+
 # ---- plots
 plt.rcParams.update({"font.size": 8})
 sel = {"3": ["NVV quadric (default) k=3", "NVV paper Taubin k=3", "NVV Euler LSQ k=3", "CGAL jet r=3 l_ave",
@@ -743,6 +932,29 @@ if all(os.path.exists(os.path.join(res, "cadpic_%s_%s_vertices.csv" % mt)) for m
     fig.savefig(os.path.join(img_dir, "accuracy_cad_parts.png"), dpi=90)
     plt.close(fig)
 
+# the crease networks: line F1 and ARI against noise, per mesh family
+if net_summary:
+    fams = [f for f in NET_FAMILIES if any(r["family"] == f for r in net_summary)]
+    fig, axes = plt.subplots(2, len(fams), figsize=(2.6 * len(fams), 5.2), squeeze=False)
+    styles = {"NVV defaults": ("-", 2.2), "NVV best phi": ("-", 1.0), "MeshLab dihedral 60": (":", 1.2),
+              "MeshLab dihedral best": ("--", 1.2), "CGAL sharp edges best": ("-.", 1.2)}
+    for j, fam in enumerate(fams):
+        for i, (col, label) in enumerate((("line_f1", "line F1"), ("adjusted_rand", "patches: ARI"))):
+            ax = axes[i][j]
+            for shown, (style, lw) in styles.items():
+                pts = sorted((float(r["noise"]), r[col]) for r in net_summary if r["family"] == fam and r["method"] == shown)
+                if pts:
+                    xs, ys = zip(*pts)
+                    ax.plot(xs, ys, style, marker="o", ms=3, lw=lw, label=shown)
+            ax.set_ylim(-0.05, 1.05)
+            ax.set_title("%s: %s" % (fam, label))
+            ax.set_xlabel("noise (% of l_ave)")
+            ax.grid(True, alpha=0.3)
+    axes[0][0].legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(os.path.join(img_dir, "accuracy_network.png"), dpi=90)
+    plt.close(fig)
+
 # ---- the page
 
 
@@ -810,6 +1022,7 @@ subst = {
     "HEAD_CAD": head_cad, "CAD_GMSH": cad_gmsh,
 }
 subst.update(py_text)
+subst.update(net_text)
 for k, v in subst.items():
     text = text.replace("{{" + k + "}}", v)
 quoted = []
@@ -818,8 +1031,10 @@ quoted = []
 def one_value(m):
     parts = m.group(1).split("|")
     x = val(*parts)
-    quoted.append("%s.csv: %s -> %s" % (parts[0], " | ".join(parts[1:]), fmt(x)))
-    return fmt(x)
+    # the crease networks' counts of lines and patches are whole numbers
+    text = "%d" % x if parts[0].startswith("network") and parts[-1].endswith(("_found", "_true", "_on_truth")) else fmt(x)
+    quoted.append("%s.csv: %s -> %s" % (parts[0], " | ".join(parts[1:]), text))
+    return text
 
 
 text = re.sub(r"\{\{v:([^}]+)\}\}", one_value, text)

@@ -32,6 +32,12 @@ void CgalJet(const PlainMesh& m, const std::vector<std::vector<int>>& nbhd,
 // CGAL::Polygon_mesh_processing::detect_sharp_edges(angle): 1 for vertices of sharp edges.
 std::vector<char> CgalSharpVertices(const PlainMesh& m, double angleDeg);
 
+// CGAL::Polygon_mesh_processing::sharp_edges_segmentation(angle): the sharp edges as vertex
+// pairs (lower index first; border edges, which CGAL counts as sharp, left out) and the patch of each face of m (-1 for a face CGAL's halfedge
+// structure refused: a non-manifold one). Returns the number of patches.
+int CgalSharpEdgesSegmentation(const PlainMesh& m, double angleDeg, std::vector<std::array<int, 2>>& edges,
+                               std::vector<int>& facePatch);
+
 }  // namespace nvv_bench
 
 #endif

@@ -91,6 +91,27 @@ inline VertexTruth CreaseTruthAt(const CreaseShape& s, const vcg::Point3d& q) {
   return t;
 }
 
+// The crease curves through q, one bit each: the roof's ridge; the cube's twelve edges; the
+// capped cylinder's bottom and top rims. A mesh edge lies on a crease when its two ends share
+// a bit (two vertices on different cube edges next to a corner share none).
+inline unsigned CreaseCurvesAt(const CreaseShape& s, const vcg::Point3d& q) {
+  const double eps = 1e-6;
+  if (s.kind == 0) return std::abs(q[0]) < eps ? 1u : 0u;
+  if (s.kind == 1) {
+    unsigned bits = 0;
+    const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+    for (int k = 0; k < 3; ++k) {
+      const int i = pairs[k][0], j = pairs[k][1];
+      if (std::abs(std::abs(q[i]) - kCubeH) < eps && std::abs(std::abs(q[j]) - kCubeH) < eps)
+        bits |= 1u << (4 * k + 2 * (q[i] > 0) + (q[j] > 0));
+    }
+    return bits;
+  }
+  const double rho = std::hypot(q[0], q[1]);
+  if (std::abs(std::abs(q[2]) - kCapH / 2) < eps && std::abs(rho - kCapR) < 1e-4) return q[2] > 0 ? 2u : 1u;
+  return 0;
+}
+
 struct F1 {
   double precision = 0, recall = 0, f1 = 0;
 };

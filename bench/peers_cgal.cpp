@@ -1,6 +1,8 @@
 // CGAL's estimators for the accuracy benchmark (see bench_common.h).
 #include "bench_common.h"
 
+#include <algorithm>
+
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Simple_cartesian.h>
@@ -54,6 +56,29 @@ std::vector<char> CgalSharpVertices(const PlainMesh& m, double angleDeg) {
       out[sm.vertex(e, 1).idx()] = 1;
     }
   return out;
+}
+
+int CgalSharpEdgesSegmentation(const PlainMesh& m, double angleDeg, std::vector<std::array<int, 2>>& edges,
+                               std::vector<int>& facePatch) {
+  SurfaceMesh sm;
+  std::vector<SurfaceMesh::Vertex_index> vi;
+  for (const auto& p : m.pos) vi.push_back(sm.add_vertex(Point(p.x(), p.y(), p.z())));
+  std::vector<SurfaceMesh::Face_index> fi;
+  for (const auto& f : m.face) fi.push_back(sm.add_face(vi[f[0]], vi[f[1]], vi[f[2]]));
+  auto sharp = sm.add_property_map<SurfaceMesh::Edge_index, bool>("e:sharp", false).first;
+  auto patch = sm.add_property_map<SurfaceMesh::Face_index, std::size_t>("f:patch", 0).first;
+  const int count = int(CGAL::Polygon_mesh_processing::sharp_edges_segmentation(sm, angleDeg, sharp, patch));
+  edges.clear();
+  for (auto e : sm.edges())
+    if (sharp[e] && !sm.is_border(e)) {  // CGAL counts border edges as sharp; no truth here does
+      const int a = int(sm.vertex(e, 0).idx()), b = int(sm.vertex(e, 1).idx());
+      edges.push_back({{std::min(a, b), std::max(a, b)}});
+    }
+  std::sort(edges.begin(), edges.end());
+  facePatch.assign(m.face.size(), -1);
+  for (std::size_t f = 0; f < fi.size(); ++f)
+    if (fi[f] != SurfaceMesh::null_face()) facePatch[f] = int(patch[fi[f]]);
+  return count;
 }
 
 }  // namespace nvv_bench

@@ -10,6 +10,8 @@ int ExportSmooth(const std::string& outDir);  // their meshes as PLY, for bench/
 int RunCreases(const std::string& outDir, const std::string& which); // "f1" or "near"
 int RunReal(const std::string& outDir);
 int RunCad(const std::string& outDir, const std::string& partsDir);  // bench/cad/make_cad_parts.py's output
+// crease edges, lines and patches against the truth, beside MeshLab's and CGAL's
+int RunNetworks(const std::string& outDir, const std::string& partsDir);
 }  // namespace nvv_bench
 
 #endif

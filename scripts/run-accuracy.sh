@@ -3,7 +3,8 @@
 # from scratch: configures build-bench/ with the benchmarks, builds nvv_bench_accuracy, runs its
 # five sections (bench/accuracy.cpp), the quadric fit's levers (bench/explore_fit.cpp), the
 # Python libraries' estimators on the smooth sections' meshes (bench/python_peers.py) and the
-# "cad" section on parts made by gmsh's OpenCASCADE kernel (bench/cad/make_cad_parts.py), and
+# "cad" section on parts made by gmsh's OpenCASCADE kernel (bench/cad/make_cad_parts.py), the
+# "network" section (crease edges, lines and patches) on those parts and the crease shapes, and
 # turns their tables and CSV files into the page, the CSV files beside it and the plots
 # (bench/accuracy_report.py, matplotlib from Debian: apt-get install python3-matplotlib).
 # The Python estimators run in a virtual environment, build-bench/pyvenv, made with Debian's
@@ -12,7 +13,8 @@
 # Set NVV_CPU_LOCK=/path/to/lockfile to run each build / run step under flock(1).
 # NVV_ACCURACY_ONLY=python reruns only the Python estimators and rewrites the page from the
 # other sections' output of the last full run (build-bench/accuracy/), with that run's time;
-# NVV_ACCURACY_ONLY=cad does the same for the CAD parts (gmsh from Debian: python3-gmsh).
+# NVV_ACCURACY_ONLY=cad does the same for the CAD parts (gmsh from Debian: python3-gmsh) and the
+# crease networks measured on them; NVV_ACCURACY_ONLY=network for the crease networks alone.
 set -eu
 cd "$(dirname "$0")/.."
 start=$(date +%s)
@@ -54,11 +56,24 @@ run_cad() {
   echo "section cad: $(( $(date +%s) - t0 )) s"
 }
 
-if [ "${NVV_ACCURACY_ONLY:-}" = python ] || [ "${NVV_ACCURACY_ONLY:-}" = cad ]; then
+# Crease edges, lines and patches against the truth on the crease shapes, the CAD parts of
+# run_cad and the ABC model, beside MeshLab's and CGAL's (bench/crease_networks.cpp).
+run_network() {
+  t0=$(date +%s)
+  lock build-bench/bench/nvv_bench_accuracy network "$out" "$out/cad" >"$out/network.md"
+  echo "$(( $(date +%s) - t0 ))" >"$out/network_seconds.txt"
+  echo "section network: $(( $(date +%s) - t0 )) s"
+}
+
+case "${NVV_ACCURACY_ONLY:-}" in python|cad|network)
   [ -f "$out/full_seconds.txt" ] || { echo "NVV_ACCURACY_ONLY=$NVV_ACCURACY_ONLY needs a full run's $out first" >&2; exit 2; }
-  if [ "$NVV_ACCURACY_ONLY" = python ]; then run_python_peers; else run_cad; fi
-  seconds=$(cat "$out/full_seconds.txt")
-else
+  case "$NVV_ACCURACY_ONLY" in
+    python) run_python_peers ;;
+    cad) run_cad; run_network ;;
+    network) run_network ;;
+  esac
+  seconds=$(cat "$out/full_seconds.txt") ;;
+*)
   rm -rf "$out"
   mkdir -p "$out"
   for s in grids variants f1 near real; do
@@ -75,9 +90,10 @@ else
     done' >"$out/levers.md"
   run_python_peers
   run_cad
+  run_network
   seconds=$(( $(date +%s) - start ))
-  echo "$seconds" >"$out/full_seconds.txt"
-fi
+  echo "$seconds" >"$out/full_seconds.txt" ;;
+esac
 rm -f docs/accuracy/*.csv   # the report writes every table family afresh
 /usr/bin/python3 bench/accuracy_report.py "$out" bench/accuracy.md.in docs/accuracy.md docs/images "$seconds"
 echo "docs/accuracy.md regenerated in $(( $(date +%s) - start )) s"
