@@ -222,8 +222,8 @@ int Find(std::vector<int>& up, int x) {
 }
 
 // Faces joined across every edge of two faces that is not a crease edge; patches smaller than
-// tuning::kMinPatchFaces merged into the neighbour they share most crease edges with.
-void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, CreaseNetwork& net) {
+// minFaces merged into the neighbour they share most crease edges with.
+void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, int minFaces, CreaseNetwork& net) {
   const int nf = g.FaceCount();
   std::vector<int> up(nf);
   std::iota(up.begin(), up.end(), 0);
@@ -248,12 +248,12 @@ void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, CreaseNe
   // Small patches, smallest first (ties by root), each into its best-connected neighbour.
   std::vector<int> small;
   for (int f = 0; f < nf; ++f)
-    if (Find(up, f) == f && size[f] < tuning::kMinPatchFaces) small.push_back(f);
+    if (Find(up, f) == f && size[f] < minFaces) small.push_back(f);
   std::sort(small.begin(), small.end(), [&](int x, int y) { return size[x] != size[y] ? size[x] < size[y] : x < y; });
   std::vector<int> neighbours;
   for (int p : small) {
     const int root = Find(up, p);
-    if (size[root] >= tuning::kMinPatchFaces) continue;  // grown by an earlier merge
+    if (size[root] >= minFaces) continue;  // grown by an earlier merge
     neighbours.clear();
     for (int i = pairStart[p]; i < pairStart[p + 1]; ++i) {
       const int x = Find(up, creasePairs[pairList[i]][0]), y = Find(up, creasePairs[pairList[i]][1]);
@@ -289,7 +289,7 @@ void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, CreaseNe
 }  // namespace
 
 CreaseNetwork FindCreaseNetwork(const SurfaceGraph& g, const std::vector<VertexResult>& res, double radius,
-                                double creaseAngleDeg) {
+                                double creaseAngleDeg, bool cleanMesh) {
   CreaseNetwork net;
   const double cosCrease = std::cos(DegToRad(creaseAngleDeg));
   std::vector<std::pair<Edge, float>> found;
@@ -322,7 +322,7 @@ CreaseNetwork FindCreaseNetwork(const SurfaceGraph& g, const std::vector<VertexR
   }
   net.spurEdges = DropSpurs(g, res, net.edges, net.edgeCuspAngle, net.lines, net.edgeLine, radius);
   if (net.spurEdges > 0) net.lines = TraceLines(g, res, net.edges, net.edgeCuspAngle, net.edgeLine);
-  GrowPatches(g, net.edges, net);
+  GrowPatches(g, net.edges, cleanMesh ? 1 : tuning::kMinPatchFaces, net);
   return net;
 }
 

@@ -13,8 +13,11 @@
 //  3. Spurs (DropSpurs): lines shorter than g_m that still stop at a crease vertex are dropped.
 //  4. Lines (TraceLines): crease edges linked into polylines that end at corners, at the
 //     border, at junctions of three or more lines, or close on themselves.
-//  5. Patches (GrowPatches): faces joined across every non-crease edge; patches of fewer faces
-//     than a disc of radius g_m holds are merged into the neighbour they share most crease edges with.
+//  5. Patches (GrowPatches): faces joined across every non-crease edge; where the votes decided,
+//     patches of fewer than tuning::kMinPatchFaces faces (noise between crease edges) are merged
+//     into the neighbour they share most crease edges with. On a clean mesh, whose classes came
+//     from its sharp edges (sharp_edges.h), none is: an exporter's chamfer strip or countersink
+//     facet is one or two faces between sharp edges, and a face of the model all the same.
 #ifndef NVV_CORE_CREASE_NETWORK_H
 #define NVV_CORE_CREASE_NETWORK_H
 
@@ -46,9 +49,10 @@ struct CreaseNetwork {
   std::size_t spurEdges = 0;              // edges of short lines with a free end, dropped
 };
 
-// The crease network of a run's results. radius: g_m; creaseAngleDeg: the run's crease angle.
+// The crease network of a run's results. radius: g_m; creaseAngleDeg: the run's crease angle;
+// cleanMesh: the run's classes came from the mesh's sharp edges (Summary::sharpEdges).
 CreaseNetwork FindCreaseNetwork(const SurfaceGraph& g, const std::vector<VertexResult>& res, double radius,
-                                double creaseAngleDeg);
+                                double creaseAngleDeg, bool cleanMesh = false);
 
 }  // namespace nvv
 

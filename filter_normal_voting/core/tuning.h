@@ -47,7 +47,7 @@ constexpr double kCreaseEdgeMinCosToTangent = 0.70710678118654752;
 // vertex's cusp angle do (faces of one sheet differ by noise only).
 constexpr double kCreaseEdgeMinLean = 0.5;
 // Patches of fewer faces than this (about a vertex's fan) are noise between crease edges:
-// merged into the neighbour they share most crease edges with.
+// merged into the neighbour they share most crease edges with (not on a clean mesh).
 constexpr int kMinPatchFaces = 8;
 // A line's direction at its free end is taken from this many edges back (one noisy edge turns
 // up to 45 deg), and a gap is closed only ahead of it, within 45 deg.

@@ -63,7 +63,7 @@ template <class MeshType>
 CreaseOutputs FindCreaseOutputs(const MeshType& m, const SurfaceGraph& g, const std::vector<VertexResult>& res,
                                 const Summary& sum, double creaseAngleDeg) {
   CreaseOutputs out;
-  out.net = FindCreaseNetwork(g, res, sum.radius, creaseAngleDeg);
+  out.net = FindCreaseNetwork(g, res, sum.radius, creaseAngleDeg, sum.sharpEdges);
   out.meshFacePatch.assign(m.face.size(), -1);
   const std::vector<int> slot = GraphFaceSlots(m, g);
   for (std::size_t f = 0; f < slot.size(); ++f)
