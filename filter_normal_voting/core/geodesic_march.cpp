@@ -3,8 +3,7 @@
 namespace nvv {
 namespace {
 
-// The update itself, inlined into the march's inner loop (as an out-of-line call it was a tenth
-// of the whole profile, torus, k = 3, with the call's spills).
+// The update itself, for the march's inner loop (its only caller) to inline.
 inline double Unfolded(double c, double b, double a, double dA, double dB) {
   const double edgePath = std::min(dA + b, dB + a);
   if (!(c > 0)) return edgePath;
