@@ -14,7 +14,9 @@
 
 namespace nvv_bench {
 
-inline bool LoadMesh(const std::string& path, TMesh& m) {
+// Into any vcglib triangle mesh (the speed benchmark's is float).
+template <class MeshT>
+bool LoadMesh(const std::string& path, MeshT& m) {
   std::ifstream in(path);
   if (!in) return false;
   std::vector<vcg::Point3d> v;
@@ -53,11 +55,11 @@ inline bool LoadMesh(const std::string& path, TMesh& m) {
     }
   }
   m.Clear();
-  auto vi = vcg::tri::Allocator<TMesh>::AddVertices(m, v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) (vi + i)->P() = v[i];
+  auto vi = vcg::tri::Allocator<MeshT>::AddVertices(m, v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) (vi + i)->P() = MeshT::CoordType::Construct(v[i]);
   for (const auto& t : f) {
     if (std::min({t[0], t[1], t[2]}) < 0 || std::size_t(std::max({t[0], t[1], t[2]})) >= v.size()) return false;
-    vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[t[0]], &m.vert[t[1]], &m.vert[t[2]]);
+    vcg::tri::Allocator<MeshT>::AddFace(m, &m.vert[t[0]], &m.vert[t[1]], &m.vert[t[2]]);
   }
   return !v.empty() && !f.empty();
 }

@@ -1,10 +1,10 @@
 #include "geodesic_march.h"
 
 namespace nvv {
+namespace {
 
-// Planar unfolding update of d_C from accepted A, B, given the lengths c = |AB|, b = |AC|,
-// a = |BC| of the triangle (see the header comment).
-double UnfoldedDistanceFromLengths(double c, double b, double a, double dA, double dB) {
+// The update itself, for the march's inner loop (its only caller) to inline.
+inline double Unfolded(double c, double b, double a, double dA, double dB) {
   const double edgePath = std::min(dA + b, dB + a);
   if (!(c > 0)) return edgePath;
   const double cx = (b * b - a * a + c * c) / (2 * c);
@@ -22,17 +22,23 @@ double UnfoldedDistanceFromLengths(double c, double b, double a, double dA, doub
   return std::min(d, edgePath);
 }
 
+}  // namespace
+
+// Planar unfolding update of d_C from accepted A, B, given the lengths c = |AB|, b = |AC|,
+// a = |BC| of the triangle (see the header comment).
+double UnfoldedDistanceFromLengths(double c, double b, double a, double dA, double dB) {
+  return Unfolded(c, b, a, dA, dB);
+}
+
 GeodesicMarch::GeodesicMarch(const SurfaceGraph& g)
-    : g_(g), dist_(FilledOnHugePages(g.VertexCount(), std::numeric_limits<double>::infinity())),
-      state_(FilledOnHugePages<std::uint8_t>(g.VertexCount(), kFar)),
-      heapIndex_(FilledOnHugePages(g.VertexCount(), -1)) {}
+    : g_(g), node_(FilledOnHugePages(g.VertexCount(), Node{std::numeric_limits<double>::infinity(), -1, kFar})) {}
 
 void GeodesicMarch::Reset() {
   for (int v : touched_) {
-    dist_[v] = std::numeric_limits<double>::infinity();
-    state_[v] = kFar;
+    node_[v].dist = std::numeric_limits<double>::infinity();
+    node_[v].state = kFar;
   }
-  for (const Entry& e : heap_) heapIndex_[e.v] = -1;
+  for (const Entry& e : heap_) node_[e.v].heapIndex = -1;
   touched_.clear();
   reached_.clear();
   heap_.clear();
@@ -43,18 +49,18 @@ void GeodesicMarch::SiftUp(int i, Entry e) {
     const int parent = (i - 1) / 2;
     if (!Before(e, heap_[parent])) break;
     heap_[i] = heap_[parent];
-    heapIndex_[heap_[i].v] = i;
+    node_[heap_[i].v].heapIndex = i;
     i = parent;
   }
   heap_[i] = e;
-  heapIndex_[e.v] = i;
+  node_[e.v].heapIndex = i;
 }
 void GeodesicMarch::Push(Entry e) {
   heap_.push_back(e);
   SiftUp(int(heap_.size()) - 1, e);
 }
 void GeodesicMarch::PopFront() {
-  heapIndex_[heap_.front().v] = -1;
+  node_[heap_.front().v].heapIndex = -1;
   const Entry last = heap_.back();
   heap_.pop_back();
   const int n = int(heap_.size());
@@ -66,19 +72,20 @@ void GeodesicMarch::PopFront() {
     if (child + 1 < n && Before(heap_[child + 1], heap_[child])) ++child;
     if (!Before(heap_[child], last)) break;
     heap_[i] = heap_[child];
-    heapIndex_[heap_[i].v] = i;
+    node_[heap_[i].v].heapIndex = i;
     i = child;
   }
   heap_[i] = last;
-  heapIndex_[last.v] = i;
+  node_[last.v].heapIndex = i;
 }
 
 void GeodesicMarch::Relax(int v, double d) {
-  if (state_[v] == kAccepted || state_[v] == kAcceptedBlocked) return;
-  if (state_[v] == kFar) { touched_.push_back(v); state_[v] = kTentative; }
-  if (d < dist_[v]) {
-    dist_[v] = d;
-    const int i = heapIndex_[v];
+  Node& n = node_[v];
+  if (n.state >= kAccepted) return;
+  if (n.state == kFar) { touched_.push_back(v); n.state = kTentative; }
+  if (d < n.dist) {
+    n.dist = d;
+    const int i = n.heapIndex;
     if (i >= 0) SiftUp(i, {d, v});            // decrease-key: a smaller key only moves up
     else if (d <= radius_) Push({d, v});      // beyond g_m it could never be popped (header comment)
   }
@@ -102,10 +109,10 @@ void GeodesicMarch::Expand(int x) {
 void GeodesicMarch::UpdateThrough(int x, int o, int c, double xo, double xc, double oc, bool useTriangle) {
   if (IsReached(c)) return;
   double d;
-  if (useTriangle && state_[o] == kAccepted)
-    d = UnfoldedDistanceFromLengths(xo, xc, oc, dist_[x], dist_[o]);
+  if (useTriangle && node_[o].state == kAccepted)
+    d = Unfolded(xo, xc, oc, node_[x].dist, node_[o].dist);
   else
-    d = dist_[x] + xc;
+    d = node_[x].dist + xc;
   Relax(c, d);
 }
 

@@ -9,7 +9,9 @@
 //
 // Scratch state is per instance (one per thread), allocated once for the whole mesh and
 // reset in O(visited) after each march: a march of a few hundred vertices never pays for the
-// mesh's size, and the per-vertex loop allocates nothing once the vectors have grown.
+// mesh's size, and the per-vertex loop allocates nothing once the vectors have grown. A vertex's
+// distance, state and heap slot share one 16-byte record: every touch of a vertex reads all
+// three, so a scattered neighbour costs one cache miss instead of three.
 //
 // Cost per march: the edge lengths of the unfolding are read from SurfaceGraph::faceEdge; the
 // front is an indexed binary heap with decrease-key (one entry per tentative vertex); a vertex
@@ -51,8 +53,8 @@ class GeodesicMarch {
     Reset();
     radius_ = radius;
     touched_.push_back(source);
-    dist_[source] = 0;
-    state_[source] = kTentative;
+    node_[source].dist = 0;
+    node_[source].state = kTentative;
     Push({0.0, source});
     bool complete = true;
     const long long maxFaces = (long long)maxVertices * tuning::kMarchFacesPerVertex;
@@ -66,9 +68,9 @@ class GeodesicMarch {
         if (faces > maxFaces) { complete = false; break; }
       }
       PopFront();
-      state_[e.v] = kAccepted;
+      node_[e.v].state = kAccepted;
       reached_.push_back(e.v);
-      if (e.v != source && blocked(e.v)) { state_[e.v] = kAcceptedBlocked; continue; }
+      if (e.v != source && blocked(e.v)) { node_[e.v].state = kAcceptedBlocked; continue; }
       Expand(e.v);
     }
     return complete;
@@ -80,11 +82,18 @@ class GeodesicMarch {
   // Accepted vertices in increasing distance; the source first.
   const std::vector<int>& Reached() const { return reached_; }
   // Distance of a touched vertex (tentative beyond the radius), +inf if never touched.
-  double Distance(int v) const { return dist_[v]; }
-  bool IsReached(int v) const { return state_[v] == kAccepted || state_[v] == kAcceptedBlocked; }
+  double Distance(int v) const { return node_[v].dist; }
+  bool IsReached(int v) const { return node_[v].state >= kAccepted; }
 
  private:
   enum : std::uint8_t { kFar = 0, kTentative = 1, kAccepted = 2, kAcceptedBlocked = 3 };
+  // A vertex's scratch: its distance (+inf untouched), its slot in heap_ (-1 when not there) and
+  // its state.
+  struct Node {
+    double dist;
+    int heapIndex;
+    std::uint8_t state;
+  };
   struct Entry {
     double d;
     int v;
@@ -94,8 +103,8 @@ class GeodesicMarch {
   static bool Before(const Entry& a, const Entry& b) { return a.d < b.d || (a.d == b.d && a.v < b.v); }
 
   void Reset();
-  // Indexed binary heap: heapIndex_[v] is v's slot in heap_ (-1 when not there). Sifting moves
-  // a hole instead of swapping, and keeps heapIndex_ in step.
+  // Indexed binary heap: node_[v].heapIndex is v's slot in heap_. Sifting moves a hole instead
+  // of swapping, and keeps the slots in step.
   void SiftUp(int i, Entry e);
   void Push(Entry e);
   void PopFront();
@@ -107,9 +116,7 @@ class GeodesicMarch {
 
   const SurfaceGraph& g_;
   double radius_ = 0;
-  std::vector<double> dist_;
-  std::vector<std::uint8_t> state_;
-  std::vector<int> heapIndex_;
+  std::vector<Node> node_;
   std::vector<int> touched_, reached_;
   std::vector<Entry> heap_;
 };

@@ -38,22 +38,23 @@ struct Pass2Scratch {
 
 typedef std::vector<std::array<float, 3>> NormalArray;
 
-// What one pass of pass 2 reads.
+// What one pass of pass 2 reads. The neighbours' classes and normals are read from compact
+// arrays (1 and 12 bytes per vertex) rather than from the 80-byte results: a ball's samples lie
+// scattered in memory, and each such read is a cache miss on a large mesh.
 struct CurvatureRound {
   const SurfaceGraph& g;
   const Params& p;
   const Pass1Settings& s;
-  std::vector<VertexResult>& out;  // pass-1 classes and normals; each vertex writes only its own
-  const NormalArray* previous;     // the previous round's fitted normals; null in the first round
+  std::vector<VertexResult>& out;  // pass-1 classes; each vertex writes only its own
+  const std::vector<std::uint8_t>& surface;   // 1 where pass 1 (and thinning) left a surface vertex
+  const NormalArray& normals;      // pass 1's normals in the first round, then the previous round's
   const std::vector<std::uint8_t>& onBorder;  // empty where no fit may take the cubic
   double cosPhi, slopeWeight, nearBorder2;
   bool last;
 
-  // The normal this round's fit uses for vertex x: pass 1's, then the previous round's.
-  Eigen::Vector3d NormalOf(int x) const {
-    return previous == nullptr ? ToVec(out[x].normal) : ToVec((*previous)[x].data());
-  }
-  bool NotSurface(int x) const { return out[x].cls != VertexClass::Surface; }
+  // The normal this round's fit uses for vertex x.
+  Eigen::Vector3d NormalOf(int x) const { return ToVec(normals[x].data()); }
+  bool NotSurface(int x) const { return !surface[x]; }
 };
 
 // The quadric fit of v over its same-sheet ball. The fit needs the ball but no distances, so the
@@ -88,7 +89,7 @@ PrincipalCurvatures FitByVotes(const CurvatureRound& R, int v, const TangentFram
     if (x == v || R.NotSurface(x)) continue;
     const double gi = march.Distance(x);
     CurvatureVote vote;
-    if (CurvatureVoteOf(F, g.pos[x] - g.pos[v], ToVec(R.out[x].normal), gi, VoteWeight(gi, R.s.sigma), vote))
+    if (CurvatureVoteOf(F, g.pos[x] - g.pos[v], R.NormalOf(x), gi, VoteWeight(gi, R.s.sigma), vote))
       sc.votes.push_back(vote);
   }
   return R.p.fit == CurvatureFit::PaperTaubin ? TaubinFromVotes(F, sc.votes) : EulerFromVotes(F, sc.votes);
@@ -110,8 +111,8 @@ std::vector<std::uint8_t> BorderVertices(const SurfaceGraph& g, const Params& p,
 // to `fitted` in rounds before the last) or the paper's votes.
 PassEnd CurvaturePass(const CurvatureRound& R, int threads, PassProgress& progress, NormalArray* fitted) {
   return ParallelOverVertices<Pass2Scratch>(R.g, threads, progress, [&](int v, Pass2Scratch& sc) {
+    if (R.NotSurface(v)) return;
     VertexResult& r = R.out[v];
-    if (r.cls != VertexClass::Surface) return;
     const Eigen::Vector3d Nv = R.NormalOf(v).normalized();
     const TangentFrame F(Nv);
     bool capped = false;
@@ -152,12 +153,21 @@ PassEnd FitSurfaceCurvature(const SurfaceGraph& g, const Params& p, const Pass1S
   const int rounds = CurvatureRounds(p);
   const std::vector<std::uint8_t> onBorder = BorderVertices(g, p, threads);
   const double nearBorder = tuning::kBorderCubicFraction * s.radius;
-  // Two rounds need one normal array (12 bytes per vertex): the last round writes no normals.
+  // The surface flags and pass 1's normals in compact arrays (CurvatureRound); the rounds then
+  // need one more normal array (12 bytes per vertex): the last round writes no normals.
+  std::vector<std::uint8_t> surface;
   NormalArray previous, fitted;
+  AssignOnHugePages(surface, g.VertexCount(), std::uint8_t(0));
+  AssignOnHugePages(previous, g.VertexCount());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (int v = 0; v < g.VertexCount(); ++v) {
+    surface[v] = out[v].cls == VertexClass::Surface;
+    for (int j = 0; j < 3; ++j) previous[v][j] = out[v].normal[j];
+  }
   for (int round = 0; round < rounds; ++round) {
     const bool last = round == rounds - 1;
     if (!last) AssignOnHugePages(fitted, g.VertexCount());
-    const CurvatureRound R{g, p, s, out, round == 0 ? nullptr : &previous, onBorder,
+    const CurvatureRound R{g, p, s, out, surface, previous, onBorder,
                            std::cos(DegToRad(p.creaseAngleDeg)), tuning::kSlopeWeightEdges * g.meanEdge,
                            nearBorder * nearBorder, last};
     const std::string text = rounds == 1 ? std::string("Normal vector voting: curvature")
