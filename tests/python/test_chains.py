@@ -1,8 +1,10 @@
-# The filter chained with PyMeshLab's own filters, the two recipes of docs/meshlab2025.md, each
+# The filter chained with PyMeshLab's own filters, the three recipes of docs/meshlab2025.md, each
 # asserting a measured benefit over the same chain without our filter:
 #  1. crease-preserving smoothing: select creases and corners, invert, Laplacian on the rest;
 #  2. feature-aware simplification: our classes as vertex quality weight Quadric Edge Collapse,
-#     so at the same face budget the input's crease vertices lie closer to the decimated mesh.
+#     so at the same face budget the input's crease vertices lie closer to the decimated mesh;
+#  3. crease-preserving remeshing (the README's): the faces touching the crease lines kept,
+#     isotropic remeshing of the rest, against the remesher alone at its default feature angle.
 # The noisy sample cad_part_noise5.ply and its clean twin cad_part.ply share their vertex order;
 # the twin is read straight from its file.
 import numpy as np
@@ -43,8 +45,8 @@ def test_crease_preserving_smoothing_keeps_creases_and_removes_noise():
     assert err(chain) < err(plain)
 
 
-def true_crease_vertices():
-    """Vertices of the clean twin where two of its incident faces meet at more than 30 degrees."""
+def true_crease_vertices(angle=30.0):
+    """Vertices of the clean twin where two of its incident faces meet at more than `angle` degrees."""
     verts, f = read_ply(CAD_CLEAN)
     v = np.stack([verts["x"], verts["y"], verts["z"]], axis=1).astype(float)
     n = np.cross(v[f[:, 1]] - v[f[:, 0]], v[f[:, 2]] - v[f[:, 0]])
@@ -53,8 +55,8 @@ def true_crease_vertices():
     for fi, tri in enumerate(f):
         for vi in tri:
             incident[vi].append(fi)
-    cos30 = np.cos(np.radians(30.0))
-    sharp = [i for i, fs in enumerate(incident) if len(fs) > 1 and np.min(n[fs] @ n[fs].T) < cos30]
+    cos_angle = np.cos(np.radians(angle))
+    sharp = [i for i, fs in enumerate(incident) if len(fs) > 1 and np.min(n[fs] @ n[fs].T) < cos_angle]
     return np.array(sharp)
 
 
@@ -99,3 +101,34 @@ def test_feature_aware_simplification_keeps_creases_closer_at_the_same_face_budg
           % (100 * weighted[1] / plain[1], 100 * weighted[2] / plain[2]))
     assert weighted[1] < 0.8 * plain[1]
     assert weighted[2] < plain[2]
+
+
+def test_crease_preserving_remeshing_keeps_the_lines_and_remeshes_the_rest():
+    idx = true_crease_vertices(10.0)  # also the part's 18 and 29 deg creases
+    assert len(idx) > 200
+    original = ply_positions(CAD)[idx]
+    outcomes = {}
+    for name in ["remesher alone, 30 deg", "recipe"]:
+        ms = load(CAD)
+        lave = ms.compute_normal_vector_voting(update_normals=False, quality=9, color=2)["mean_edge_length"]
+        ms = load(CAD)
+        remesh = dict(iterations=10, targetlen=pymeshlab.PureValue(2 * lave), featuredeg=30, checksurfdist=False)
+        if name == "recipe":
+            ms.compute_normal_vector_voting(crease_angle=15, selection="Vertices on crease lines")
+            on_lines = ms.current_mesh().vertex_matrix()[ms.current_mesh().vertex_selection_array()].copy()
+            ms.compute_selection_transfer_vertex_to_face(inclusive=False)
+            ms.apply_selection_inverse(invfaces=True, invverts=True)
+            ms.meshing_isotropic_explicit_remeshing(selectedonly=True, **remesh)
+            kept = {tuple(p) for p in ms.current_mesh().vertex_matrix()}
+            assert len(on_lines) > 200
+            assert all(tuple(p) in kept for p in on_lines), "a vertex of a crease line moved"
+        else:
+            ms.meshing_isotropic_explicit_remeshing(selectedonly=False, **remesh)
+        faces = ms.current_mesh().face_number()
+        d = distance_from_points(ms, original)
+        outcomes[name] = (faces, d["mean"], d["max"])
+        report("[chain remeshing] %-24s %5d faces: distance of %d crease vertices (10 deg and up): mean %.4f max %.4f"
+               % ((name, faces, len(idx)) + outcomes[name][1:]))
+    alone, recipe = outcomes["remesher alone, 30 deg"], outcomes["recipe"]
+    assert recipe[0] < load(CAD).current_mesh().face_number() // 2, "most of the mesh remeshed"
+    assert recipe[1] < 0.8 * alone[1], "the remesher alone rounds the shallow creases"
