@@ -68,6 +68,22 @@ double ParallelTurn(const SurfaceGraph& g, int c, const Eigen::Vector3d& e) {
 
 int ThirdVertex(const std::array<int, 3>& t, int a, int b) { return t[0] + t[1] + t[2] - a - b; }
 
+// How much the surface turns at the other edges of face h = (a, b, c) (its edges through c), below
+// `below` (an edge that sharp is a crease of its own, as a chamfer's other side). Beside a crease
+// between two sheets the faces' other edges lie in their sheets; on a coarse, irregular
+// tessellation of a curved face the edges turn in every direction, and there may be no edge
+// parallel to (a, b) at c for ParallelTurn to compare with.
+double OtherEdgesTurn(const SurfaceGraph& g, int h, int a, int b, int c, double below) {
+  double turn = 0;
+  for (int y : {a, b})
+    g.ForEachFaceAcross(h, c, y, [&](int o) {
+      if (o == h || !(g.faceArea[o] > 0)) return;
+      const double angle = EdgeAngle(g, h, o, c, y);
+      if (angle < below) turn = std::max(turn, angle);
+    });
+  return turn;
+}
+
 // What the sharp edges of one vertex say.
 struct SharpVerdict {
   std::uint8_t cls = std::uint8_t(VertexClass::Surface);
@@ -84,14 +100,16 @@ struct Thresholds {
 
 // True when the edge (v, x) between faces f = (v, x, c) and o = (x, v, d) at dihedral angle theta
 // is sharp (sharp_edges.h).
-bool IsSharpEdge(const SurfaceGraph& g, int v, int x, int c, int d, double theta, const Thresholds& t) {
+bool IsSharpEdge(const SurfaceGraph& g, int f, int o, int v, int x, int c, int d, double theta, const Thresholds& t) {
   if (theta < t.sharp * (1 - 1e-9)) return false;  // an edge of exactly the angle is sharp
   // Noise tilts a face of height h over the edge by about sigma / h: slivers by much more.
   const double hc = HeightOver(g, v, x, c), hd = HeightOver(g, v, x, d);
   if (!(hc > 0 && hd > 0) || theta < tuning::kSharpEdgeOverNoise * t.sigma * (1 / hc + 1 / hd)) return false;
   if (theta >= t.always) return true;
   const Eigen::Vector3d e = (g.pos[x] - g.pos[v]).normalized();
-  return theta >= tuning::kSharpEdgeIsolation * std::max(ParallelTurn(g, c, e), ParallelTurn(g, d, e));
+  return theta >= tuning::kSharpEdgeIsolation * std::max(ParallelTurn(g, c, e), ParallelTurn(g, d, e)) &&
+         theta >= tuning::kSharpEdgeIsolation * std::max(OtherEdgesTurn(g, f, v, x, c, t.always),
+                                                          OtherEdgesTurn(g, o, v, x, d, t.always));
 }
 
 SharpVerdict JudgeVertex(const SurfaceGraph& g, int v, const Thresholds& t) {
@@ -112,7 +130,7 @@ SharpVerdict JudgeVertex(const SurfaceGraph& g, int v, const Thresholds& t) {
         const int d = ThirdVertex(g.face[o], v, x);
         if (d == c) return;  // f repeated with the other orientation
         const double theta = EdgeAngle(g, f, o, v, x);
-        if (!IsSharpEdge(g, v, x, c, d, theta, t)) return;
+        if (!IsSharpEdge(g, f, o, v, x, c, d, theta, t)) return;
         Eigen::Vector3d dir = (g.pos[x] - g.pos[v]).normalized();
         if (count == 0) firstDir = dir;
         else if (std::abs(dir.dot(firstDir)) < tuning::kCosSameLine) corner = true;

@@ -169,8 +169,8 @@ TEST(CliCreaseNetwork, ACappedCylinderHasTwoClosedLinesAndThreePatches) {
 // and meshed by a CAD kernel: its sharp model curves close into 5 loops (top face | chamfer,
 // chamfer | sides, the bottom rim, the hole's two rims), with no corner, and they bound 5 smooth
 // patches (the top, the chamfer, the sides with their fillets, the bottom, the hole). The fillets'
-// boundaries are tangent: no line. At the CAD kernel's default and fine mesh sizes the network is
-// exact; at coarser sizes (few rows of faces on the fillets and the hole) the patches are.
+// boundaries are tangent: no line. At the CAD kernel's coarse, default and fine mesh sizes the
+// network is exact; at the export size (the hole's 12 facets folded across a sliver) the patches are.
 TEST(CliCreaseNetwork, ACadBlockWithFilletsAChamferAndAHoleHasFiveClosedLinesAndFivePatches) {
   for (const std::string size : {"default", "fine", "coarse", "export"}) {
     SCOPED_TRACE(size);
@@ -180,15 +180,17 @@ TEST(CliCreaseNetwork, ACadBlockWithFilletsAChamferAndAHoleHasFiveClosedLinesAnd
     const NetworkFiles f = RunOnFile(input, dir);
     ASSERT_EQ(f.ply.faces.size(), f.ply.facePatch.size());
     EXPECT_EQ(5u, Ids(f.ply.facePatch).size());
-    if (size == "coarse" || size == "export") continue;
+    if (size == "export") continue;
     EXPECT_EQ(5u, LinesOf(f.ply.edges).size());
     EXPECT_EQ(0u, CornersOnEdges(f.ply).size());
     ASSERT_EQ(5u, f.objLines.size());
     for (const auto& l : f.objLines) EXPECT_EQ(l.front(), l.back()) << "closed";
     EXPECT_NE(std::string::npos, f.cli.out.find("in 5 lines (5 closed, 0 corners at their ends); 5 patches of"))
         << f.cli.out;
-    for (const auto& e : f.ply.edges) {  // 45 deg (chamfer) or 90 deg (bottom rim, hole)
-      EXPECT_GT(e.cuspAngle, 0.6f);
+    // 45 deg (chamfer; down to 34 deg between the coarse facets of its cone round a fillet) or
+    // 90 deg (bottom rim, hole).
+    for (const auto& e : f.ply.edges) {
+      EXPECT_GT(e.cuspAngle, 0.5f);
       EXPECT_LT(e.cuspAngle, 1.7f);
     }
   }
