@@ -544,10 +544,10 @@ for size in ("default", "fine", "ABC"):
     claim(cad(size, "0", "NVV defaults") >= cad(size, "0", "MeshLab dihedral best") - 0.02 and
           cad(size, "0", "NVV defaults") - cad(size, "0", "NVV votes only") > 0.1,
           "clean default, fine and ABC meshes: the sharp edges match the dihedral tests at their best angle, far above the votes alone")
-for size in ("export", "coarse"):
-    claim(cad(size, "0", "NVV defaults") < cad(size, "0", "MeshLab dihedral best") and
-          cad(size, "0", "NVV defaults") - cad(size, "0", "NVV votes only") > 0.3,
-          "clean export and coarse meshes: close to the dihedral tests, not yet equal; far above the votes alone")
+claim(cad("coarse", "0", "NVV defaults") >= cad("coarse", "0", "MeshLab dihedral best") - 0.01 and
+      cad("export", "0", "NVV defaults") < cad("export", "0", "MeshLab dihedral best") and
+      min(cad(size, "0", "NVV defaults") - cad(size, "0", "NVV votes only") for size in ("export", "coarse")) > 0.3,
+      "clean coarse meshes level with the dihedral tests, export ones close, not yet equal; far above the votes alone")
 claim(cad("default", "5", "NVV defaults") < cad("default", "5", "MeshLab dihedral best") and
       cad("default", "5", "NVV best phi") >= cad("default", "5", "MeshLab dihedral best") - 0.03,
       "default meshes at 5 %: the dihedral tests at their best angle lead the defaults; the filter at its best angle is level")
