@@ -176,18 +176,10 @@ Network FilterNetwork(const TMesh& m, double creaseAngleDeg = 0) {
   return n;
 }
 
-// MeshLab's "Select Crease Edges" at +-angleDeg.
-std::vector<Edge> DihedralCreaseEdges(const TMesh& src, double angleDeg) {
-  TMesh m;
-  vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, const_cast<TMesh&>(src));  // vcglib takes a non-const source
-  vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
-  vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(m);
-  const double a = angleDeg * M_PI / 180.0;
-  vcg::tri::UpdateFlags<TMesh>::FaceEdgeSelSignedCrease(m, -a, a);
+// MeshLab's "Select Crease Edges" at +-angleDeg (peers_vcg.h), lower vertex first.
+std::vector<Edge> DihedralCreaseEdgesSorted(const TMesh& m, double angleDeg) {
   std::vector<Edge> edges;
-  for (auto& f : m.face)
-    for (int z = 0; z < 3; ++z)
-      if (f.IsFaceEdgeS(z)) edges.push_back(EdgeOf(int(vcg::tri::Index(m, f.V0(z))), int(vcg::tri::Index(m, f.V1(z)))));
+  for (const auto& e : DihedralCreaseEdges(m, angleDeg)) edges.push_back(EdgeOf(e[0], e[1]));
   return edges;
 }
 
@@ -484,7 +476,7 @@ int RunNetworks(const std::string& outDir, const std::string& partsDir) {
       row("NVV defaults", nvv::FilterOptions().core.creaseAngleDeg, FilterNetwork(m));
       for (double a : angles) {
         row("NVV phi", a, FilterNetwork(m, a));
-        row("MeshLab dihedral", a, FromSelectedEdges(c.plain, DihedralCreaseEdges(m, a)));
+        row("MeshLab dihedral", a, FromSelectedEdges(c.plain, DihedralCreaseEdgesSorted(m, a)));
         Network cg;
         std::vector<Edge> edges;
         cg.patches = CgalSharpEdgesSegmentation(c.plain, a, edges, cg.facePatch);

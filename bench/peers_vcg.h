@@ -5,6 +5,7 @@
 #ifndef NVV_BENCH_PEERS_VCG_H
 #define NVV_BENCH_PEERS_VCG_H
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -66,22 +67,26 @@ inline void VcgCurvature(const TMesh& src, VcgMethod method, double pcaRadius, d
 using nvv_test::AngleWeightedNormals;
 using nvv_test::NoiseAlongNormals;
 
-// MeshLab's "Select Crease Edges" with both thresholds at +-angleDeg; 1 for vertices of
-// selected edges.
-inline std::vector<char> DihedralCreaseVertices(const TMesh& src, double angleDeg) {
+// MeshLab's "Select Crease Edges" with both thresholds at +-angleDeg: the selected edges as vertex
+// pairs, each once per face that selects it.
+inline std::vector<std::array<int, 2>> DihedralCreaseEdges(const TMesh& src, double angleDeg) {
   TMesh m;
   vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, const_cast<TMesh&>(src));  // vcglib takes a non-const source
   vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
   vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(m);
   const double a = angleDeg * M_PI / 180.0;
   vcg::tri::UpdateFlags<TMesh>::FaceEdgeSelSignedCrease(m, -a, a);
-  std::vector<char> out(m.vert.size(), 0);
+  std::vector<std::array<int, 2>> edges;
   for (auto& f : m.face)
     for (int z = 0; z < 3; ++z)
-      if (f.IsFaceEdgeS(z)) {
-        out[vcg::tri::Index(m, f.V0(z))] = 1;
-        out[vcg::tri::Index(m, f.V1(z))] = 1;
-      }
+      if (f.IsFaceEdgeS(z)) edges.push_back({{int(vcg::tri::Index(m, f.V0(z))), int(vcg::tri::Index(m, f.V1(z)))}});
+  return edges;
+}
+
+// The same test's vertices: 1 for vertices of selected edges.
+inline std::vector<char> DihedralCreaseVertices(const TMesh& src, double angleDeg) {
+  std::vector<char> out(src.vert.size(), 0);
+  for (const auto& e : DihedralCreaseEdges(src, angleDeg)) out[e[0]] = out[e[1]] = 1;
   return out;
 }
 
