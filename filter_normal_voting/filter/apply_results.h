@@ -247,6 +247,12 @@ class ApplyResults {
   }
   static void PatchColors(MeshType& m, const std::vector<VertexResult>& res, const CreaseOutputs& c) {
     const int count = c.net.patchCount;
+    if (vcg::tri::HasPerFaceColor(m)) {
+      for (std::size_t s = 0; s < m.face.size(); ++s)
+        if (!m.face[s].IsD()) m.face[s].C() = PatchColor(c.meshFacePatch[s], count);
+      return;
+    }
+    if (!vcg::tri::HasPerVertexColor(m)) return;
     const auto* base = m.vert.empty() ? nullptr : &m.vert[0];
     const int kNone = -1, kSeveral = -2;
     std::vector<int> vertexPatch(m.vert.size(), kNone);
@@ -258,12 +264,6 @@ class ApplyResults {
         vp = vp == kNone || vp == p ? p : kSeveral;
       }
     }
-    if (vcg::tri::HasPerFaceColor(m)) {
-      for (std::size_t s = 0; s < m.face.size(); ++s)
-        if (!m.face[s].IsD()) m.face[s].C() = PatchColor(c.meshFacePatch[s], count);
-      return;
-    }
-    if (!vcg::tri::HasPerVertexColor(m)) return;
     for (std::size_t i = 0; i < m.vert.size(); ++i) {
       if (m.vert[i].IsD()) continue;
       const int p = vertexPatch[i];
