@@ -324,12 +324,14 @@ std::vector<vcg::Point3d> TrueCreasePoints(const nvv_test::TMesh& clean) {
 
 // The 95th percentile of the distances from `points` to the surface of m.
 double Percentile95Distance(const std::vector<vcg::Point3d>& points, const MMesh& m) {
+  std::vector<vcg::Triangle3<double>> triangles;
+  for (const auto& f : m.face)
+    triangles.emplace_back(vcg::Point3d::Construct(f.cP(0)), vcg::Point3d::Construct(f.cP(1)),
+                           vcg::Point3d::Construct(f.cP(2)));
   std::vector<double> d;
   for (const auto& p : points) {
     double best = std::numeric_limits<double>::infinity();
-    for (const auto& f : m.face) {
-      const vcg::Triangle3<double> t(vcg::Point3d::Construct(f.cP(0)), vcg::Point3d::Construct(f.cP(1)),
-                                     vcg::Point3d::Construct(f.cP(2)));
+    for (const auto& t : triangles) {
       double dist;
       vcg::Point3d closest;
       vcg::TrianglePointDistance(t, p, dist, closest);
