@@ -155,6 +155,11 @@ inline std::string ParseArgs(int argc, const char* const* argv, CliArgs& a) {
     if (!spec) return "unknown option '--" + name + "' (see nvv --help)";
     std::string text;
     if (!takeValue(text)) return "option --" + name + " needs a value";
+    if (name == "neighbourhood_k" && Lower(text) == "auto") {  // the same as --auto_k true
+      a.options.core.autoK = true;
+      a.given.push_back(name + " " + text);
+      continue;
+    }
     double v = 0;
     std::string e = ParseValue(*spec, text, v);
     if (e.empty()) e = nvv::SetOption(a.options, name, v);

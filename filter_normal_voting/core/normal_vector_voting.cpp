@@ -6,6 +6,7 @@
 #include "crease_curvature.h"
 #include "crease_thinning.h"
 #include "huge_pages.h"
+#include "noise_estimate.h"
 #include "normal_votes.h"
 #include "sharp_edges.h"
 #include "surface_curvature.h"
@@ -140,7 +141,13 @@ Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std::vector
   DescribeInput(g, sum);
   const std::string refusal = ValidateRun(g, p);
   if (!refusal.empty()) return Refused(refusal);
-  const Pass1Settings s = SettingsFor(g, p);
+  // The noise along the normals (noise_estimate.h): reported always, and automatic k's input.
+  sum.noiseOverEdge = EstimateNoise(g, p.threads).sigmaOverEdge;
+  Params withK = p;
+  if (p.autoK) withK.k = AutoK(sum.noiseOverEdge);
+  sum.k = withK.k;
+  sum.autoK = p.autoK;
+  const Pass1Settings s = SettingsFor(g, withK);
   if (!std::isfinite(s.radius) || !(s.radius > 0))
     return Refused("The neighbourhood radius is not a positive finite number for this mesh.");
   RecordSettings(g, p, s, sum);

@@ -51,6 +51,7 @@ struct SheetFitLevers {
 
 struct Params {
   double k = 3.0;               // neighbourhood radius g_m = k * mean edge length ...
+  bool autoK = false;           // ... with k chosen from the mesh's noise (noise_estimate.h) if set ...
   double absoluteRadius = 0.0;  // ... unless this is > 0: then g_m = absoluteRadius
   // phi: smallest angle between two sheets' normals that is a crease. It drives four things:
   //  - Eq. 10's epsilon (EpsilonFromAngle), i.e. pass 1's classes (normal_votes.cpp);

@@ -159,6 +159,23 @@ constexpr int kCubicMinSamples = 12;
 constexpr int kTiltTestMinSamples = 12;
 constexpr int kCircleMinSamples = 10;
 
+// --- Noise estimate and automatic k (noise_estimate.h) -------------------------------------------
+// Two-rings fitted: enough for a stable quantile, a fixed cost on any mesh.
+constexpr int kNoiseSamples = 20000;
+// A two-ring must hold this many vertices (6 unknowns plus room for a residual).
+constexpr int kNoiseMinSamples = 10;
+// Fits whose smallest pivot is below this share of the largest are skipped (collinear rings).
+constexpr double kNoiseFitPivotRatio = 1e-8;
+// The quantile of the per-vertex residuals taken: a quarter, so half the samples may lie on features.
+constexpr double kNoiseQuantile = 0.25;
+// Turns that quantile into the noise's standard deviation: measured on noisy planes (tests/test_noise_estimate.cpp).
+constexpr double kNoiseQuantileScale = 1.2;
+// Automatic k: kAutoKMin up to kAutoKLowNoise (sigma / l_ave), kAutoKMax from kAutoKHighNoise, linear between.
+constexpr double kAutoKMin = 3.0;
+constexpr double kAutoKMax = 5.0;
+constexpr double kAutoKLowNoise = 0.02;
+constexpr double kAutoKHighNoise = 0.10;
+
 }  // namespace tuning
 }  // namespace nvv
 

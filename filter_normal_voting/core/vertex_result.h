@@ -76,6 +76,9 @@ struct Summary {
   bool consistentlyOriented = true;
   bool signAwareUsed = true;
   double meanEdge = 0, radius = 0, epsilon = 0, eta = 0;
+  double k = 0;                     // the k the run used: Params::k, or automatic k's choice
+  bool autoK = false;               // k was chosen from the noise (Params::autoK)
+  double noiseOverEdge = 0;         // estimated noise along the normals / l_ave (noise_estimate.h)
   double k1Min = 0, k1Max = 0, k2Min = 0, k2Max = 0;  // over vertices with kCurvatureValid
   double secondsPass1 = 0, secondsPass2 = 0, secondsTotal = 0;
   std::vector<std::string> warnings;

@@ -287,9 +287,11 @@ inline std::string SummaryLine(const Summary& s) {
                 "Normal vector voting: %zu surface, %zu crease, %zu corner, %zu unclassified vertices "
                 "(%zu band vertices thinned off the ridges%s); "
                 "k1 in [%.4g, %.4g], k2 in [%.4g, %.4g]; radius %.4g (mean edge %.4g), epsilon %.3g, eta %.3g; "
+                "k = %.3g%s, noise along the normals %.2g %% of the mean edge; "
                 "%.2f s (pass 1 %.2f s, pass 2 %.2f s)",
                 s.perClass[0], s.perClass[1], s.perClass[2], s.perClass[3], s.thinned, sharp, s.k1Min, s.k1Max, s.k2Min,
-                s.k2Max, s.radius, s.meanEdge, s.epsilon, s.eta, s.secondsTotal, s.secondsPass1, s.secondsPass2);
+                s.k2Max, s.radius, s.meanEdge, s.epsilon, s.eta, s.k, s.autoK ? " chosen from the noise" : "",
+                100.0 * s.noiseOverEdge, s.secondsTotal, s.secondsPass1, s.secondsPass2);
   return buf;
 }
 

@@ -17,6 +17,13 @@ std::vector<ParamSpec> AlgorithmParameters() {
      "vote, and the ball the curvature is fitted over. Small k (1-2) keeps small features; larger k (3-8) "
      "averages away scanner noise. The absolute radius is written to the log.",
      3.0, limits::kMinK, limits::kMaxK, {}, {}, false},
+    {"auto_k", ParamType::Bool, "Choose k from the noise",
+     "Estimate the noise along the normals (a quadratic fitted to the two-ring of sampled vertices; what it "
+     "leaves over) and choose k from it instead of the value above: 3 up to 2 % of the mean edge length, "
+     "rising to 5 at 10 % and more. The k chosen and the noise estimated are written to the log (the "
+     "noise always is). The absolute radius, if set, still wins. The command-line tool also takes "
+     "--neighbourhood_k auto.",
+     0.0, 0, 1, {}, {}, false},
     {"absolute_radius", ParamType::Float, "Absolute radius (0 = use k)",
      "Neighbourhood radius in the mesh's own units. 0 means: use k times the mean edge length.",
      0.0, 0.0, limits::kMaxAbsoluteRadius, {}, {}, true},
@@ -184,6 +191,7 @@ std::string SetOption(FilterOptions& o, const std::string& name, double value) {
   // out-of-range double to int is undefined.
   const int iv = spec->type == ParamType::Enum || spec->type == ParamType::Int ? int(value) : 0;
   if (name == "neighbourhood_k") o.core.k = value;
+  else if (name == "auto_k") o.core.autoK = value != 0;
   else if (name == "absolute_radius") o.core.absoluteRadius = value;
   else if (name == "crease_angle") o.core.creaseAngleDeg = value;
   else if (name == "corner_angle") o.core.cornerAngleDeg = value;
@@ -207,6 +215,7 @@ std::string SetOption(FilterOptions& o, const std::string& name, double value) {
 
 double GetOption(const FilterOptions& o, const std::string& name) {
   if (name == "neighbourhood_k") return o.core.k;
+  if (name == "auto_k") return o.core.autoK ? 1 : 0;
   if (name == "absolute_radius") return o.core.absoluteRadius;
   if (name == "crease_angle") return o.core.creaseAngleDeg;
   if (name == "corner_angle") return o.core.cornerAngleDeg;

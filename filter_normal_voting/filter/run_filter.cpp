@@ -20,12 +20,14 @@ std::string CheckOutputPath(const std::string& path, const std::string& what) {
 }
 
 std::string SettingsLine(const FilterOptions& o, const Summary& s) {
-  char buf[512];
+  char buf[640];
   std::snprintf(buf, sizeof buf,
-                "Normal vector voting: neighbourhood k = %g mean edge lengths -> absolute radius %g; "
-                "crease angle %g deg (epsilon %.4g), corner angle %g deg (eta %.4g), %s",
-                o.core.k, s.radius, o.core.creaseAngleDeg, s.epsilon, o.core.cornerAngleDeg, s.eta,
-                s.signAwareUsed ? "sign-aware rule" : "paper's rule");
+                "Normal vector voting: neighbourhood k = %g mean edge lengths%s -> absolute radius %g; "
+                "crease angle %g deg (epsilon %.4g), corner angle %g deg (eta %.4g), %s; noise along the normals "
+                "estimated at %.2g %% of the mean edge length",
+                s.k, s.autoK ? " (chosen from the noise)" : "", s.radius, o.core.creaseAngleDeg, s.epsilon,
+                o.core.cornerAngleDeg, s.eta, s.signAwareUsed ? "sign-aware rule" : "paper's rule",
+                100.0 * s.noiseOverEdge);
   return buf;
 }
 

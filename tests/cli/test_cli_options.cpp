@@ -5,6 +5,7 @@
 #include <set>
 
 #include "cli_test_support.h"
+#include "core/noise_estimate.h"
 
 using namespace nvv_cli_test;
 
@@ -62,6 +63,8 @@ std::vector<OptionCase> Cases() {
   using O = nvv::FilterOptions;
   return {
     {"neighbourhood_k", {"--neighbourhood_k", "5"}, {}, [](O& o) { o.core.k = 5; }, true},
+    // The sample is clean: automatic k keeps 3 (AutomaticKFollowsTheNoise shows a noisy mesh).
+    {"auto_k", {"--auto_k", "true"}, {}, [](O& o) { o.core.autoK = true; }, false},
     {"absolute_radius", {"--absolute_radius", "0.45"}, {}, [](O& o) { o.core.absoluteRadius = 0.45; }, true},
     {"crease_angle", {"--crease_angle", "20"}, {}, [](O& o) { o.core.creaseAngleDeg = 20; }, true},
     {"corner_angle", {"--corner_angle", "30"}, {}, [](O& o) { o.core.cornerAngleDeg = 30; }, true},
@@ -250,6 +253,41 @@ TEST_F(CliOptions, AbsoluteRadiusIsTheRadiusUsed) {
   CliResult r;
   Run({"--absolute_radius", "0.45"}, &r);
   EXPECT_DOUBLE_EQ(0.45, PrintedRadius(r.out));
+}
+
+// On the noisy sphere cap (5 % of l_ave along z) automatic k estimates about that noise, says so,
+// and runs at the k it chose (3.75 at 5 %), which is the in-process run's; the clean sample keeps 3.
+TEST_F(CliOptions, AutomaticKFollowsTheNoise) {
+  const std::string sphere = std::string(NVV_SOURCE_DIR) + "/sample_meshes/paper_sphere_noise5.ply";
+  TempDir out;
+  const CliResult r = RunCli({"--neighbourhood_k", "auto", sphere, out.File("auto.ply")}, out);
+  ASSERT_EQ(0, r.exitCode) << r.err;
+  const std::size_t at = r.out.find("; k = "), noise = r.out.find("noise along the normals ");
+  ASSERT_NE(std::string::npos, at) << r.out;
+  ASSERT_NE(std::string::npos, noise) << r.out;
+  const double k = std::stod(r.out.substr(at + 6)), sigma = std::stod(r.out.substr(noise + 24)) / 100;
+  std::printf("[auto k] noise %.4f of l_ave -> k = %g\n", sigma, k);
+  EXPECT_NEAR(0.05, sigma, 0.0075);
+  EXPECT_NE(std::string::npos, r.out.find("chosen from the noise")) << r.out;
+  EXPECT_NEAR(nvv::AutoK(sigma), k, 0.02);  // both printed to 2-3 digits
+  EXPECT_GT(k, 3.5);
+  nvv::FilterOptions o = nvv::DefaultOptions();
+  o.core.autoK = true;
+  Reference ref;
+  ASSERT_TRUE(RunReference(sphere, o, ref)) << ref.st.message;
+  EXPECT_NEAR(ref.sum.k, k, 0.006);
+  nvv::ResultPlyData data;
+  std::string error;
+  ASSERT_TRUE(nvv::ReadResultPly(out.File("auto.ply"), data, error)) << error;
+  EXPECT_TRUE(SameRecords(ref.records, data.vertices));
+  o.core.autoK = false;
+  Reference fixed;
+  ASSERT_TRUE(RunReference(sphere, o, fixed)) << fixed.st.message;
+  EXPECT_FALSE(SameRecords(fixed.records, data.vertices)) << "automatic k ran at k = 3";
+  // The clean sample: k = 3, and a noise estimate near 0.
+  CliResult clean;
+  Run({"--neighbourhood_k", "auto"}, &clean);
+  EXPECT_NE(std::string::npos, clean.out.find("; k = 3 chosen from the noise")) << clean.out;
 }
 
 TEST_F(CliOptions, SpellingsOfOneValueGiveTheSameFile) {

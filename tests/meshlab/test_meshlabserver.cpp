@@ -149,6 +149,14 @@ TEST(MeshLabServer, EveryParameterIsHonoured) {
   // ... and with them on, as by default, the ridge is found.
   check("sharp_edge_angle", "10", [&](const MMesh& m, const ServerRun&) { EXPECT_GT(CountColour(m, red), 20); },
         {{"class_rule", "1"}}, roof);
+  // The sample's 5 % noise: automatic k chooses more than 3 and the log says so.
+  check("auto_k", "true", [&](const MMesh& m, const ServerRun& r) {
+    EXPECT_GT(MaxQualityDiff(base, m), 1e-3);
+    const std::size_t at = r.output.find("neighbourhood k = ");
+    ASSERT_NE(std::string::npos, at) << r.output;
+    EXPECT_GT(std::stod(r.output.substr(at + 18)), 3.5) << r.output;
+    EXPECT_NE(std::string::npos, r.output.find("(chosen from the noise)")) << r.output;
+  });
   check("update_normals", "false", [&](const MMesh& m, const ServerRun&) {
     MMesh in;
     ASSERT_TRUE(ReadPly(kCad, in));

@@ -207,7 +207,8 @@ TEST(ScriptedUse, ReturnedDictHoldsTheSummary) {
   for (const auto& kv : r.dict) std::printf("[dict] %s = %s\n", kv.first.c_str(), qUtf8Printable(kv.second.toString()));
   const Dict& d = r.dict;
   for (const char* key : {"surface_vertices", "crease_vertices", "corner_vertices", "unclassified_vertices", "k1_min",
-                          "k1_max", "k2_min", "k2_max", "absolute_radius", "mean_edge_length", "seconds"})
+                          "k1_max", "k2_min", "k2_max", "absolute_radius", "k_used", "noise_estimate", "mean_edge_length",
+                          "seconds"})
     EXPECT_TRUE(d.count(key)) << key;
   EXPECT_EQ(Count(r.cls, nvv::VertexClass::Surface), d.at("surface_vertices").toInt());
   EXPECT_EQ(Count(r.cls, nvv::VertexClass::Crease), d.at("crease_vertices").toInt());
@@ -281,6 +282,15 @@ TEST(ScriptedUse, EveryParameterIsHonoured) {
   // ... and with them on, as by default, the ridge is found.
   check("sharp_edge_angle", 10, [&](const RunResult& r) { EXPECT_GT(Count(r.cls, crease), 20); },
         {{"class_rule", 1}}, roof);
+  // The sample's 5 % noise: automatic k chooses more than 3 and says which.
+  check("auto_k", 1, [&](const RunResult& r) {
+    EXPECT_EQ(3.0, base.dict.at("k_used").toDouble());
+    EXPECT_NEAR(0.05, r.dict.at("noise_estimate").toDouble(), 0.0075);
+    EXPECT_GT(r.dict.at("k_used").toDouble(), 3.5);
+    EXPECT_NEAR(r.dict.at("k_used").toDouble() * r.dict.at("mean_edge_length").toDouble(),
+                r.dict.at("absolute_radius").toDouble(), 1e-9);
+    EXPECT_GT(MaxQualityDiff(base, r), 1e-3);
+  });
   check("update_normals", 0, [&](const RunResult& r) {
     Session s;
     NewSession(s);

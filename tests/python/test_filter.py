@@ -149,7 +149,8 @@ def test_mesh_without_faces_is_refused_with_the_reason_and_left_unchanged():
 INT_KEYS = ["surface_vertices", "crease_vertices", "corner_vertices", "unclassified_vertices", "capped_vertices",
             "thinned_vertices", "crease_edge_count", "crease_lines", "closed_crease_lines", "line_end_corners",
             "patches", "smallest_patch_faces", "largest_patch_faces"]
-FLOAT_KEYS = ["k1_min", "k1_max", "k2_min", "k2_max", "absolute_radius", "mean_edge_length", "epsilon", "eta",
+FLOAT_KEYS = ["k1_min", "k1_max", "k2_min", "k2_max", "absolute_radius", "k_used", "noise_estimate",
+              "mean_edge_length", "epsilon", "eta",
               "seconds", "seconds_pass1", "seconds_pass2"]
 
 
@@ -172,6 +173,7 @@ def test_returned_dict_holds_the_summary():
     assert m.selected_vertex_number() == out["crease_vertices"] + out["corner_vertices"]
     assert out["k1_min"] < out["k1_max"] and out["k2_min"] <= out["k1_max"]
     assert out["absolute_radius"] == pytest.approx(3.0 * out["mean_edge_length"], rel=1e-9)
+    assert out["k_used"] == 3.0 and out["noise_estimate"] == pytest.approx(0.05, rel=0.15)  # the sample's 5 %
     # The paper's thresholds from the default angles (60 deg): 1/tan^2(30 deg) - 1 = 2.
     assert out["epsilon"] == pytest.approx(2.0) and out["eta"] == pytest.approx(2.0)
     assert out["seconds"] > 0 and out["seconds"] >= out["seconds_pass1"]

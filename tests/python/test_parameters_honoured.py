@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import pymeshlab
-from conftest import CAD, load, parameters
+from conftest import CAD, CAD_CLEAN, load, parameters
 
 CREASE, CORNER = 1, 2
 
@@ -60,6 +60,20 @@ def base():
 
 def check_neighbourhood_k(base):
     assert quality_diff(base, run(neighbourhood_k=6)) > 1e-3
+
+
+def check_auto_k(base):
+    # The sample has 5 % of l_ave noise along its normals: automatic k estimates it and runs at
+    # 3 + 2 (noise - 2 %) / 8 % (about 3.75); the clean twin keeps 3.
+    r = run(auto_k=True)
+    d = r["dict"]
+    assert base["dict"]["k_used"] == 3.0 and d["noise_estimate"] == pytest.approx(base["dict"]["noise_estimate"])
+    assert d["noise_estimate"] == pytest.approx(0.05, rel=0.15)
+    assert d["k_used"] == pytest.approx(3 + 2 * (d["noise_estimate"] - 0.02) / 0.08)
+    assert d["absolute_radius"] == pytest.approx(d["k_used"] * d["mean_edge_length"])
+    assert quality_diff(base, r) > 1e-3
+    clean = run(CAD_CLEAN, auto_k=True)["dict"]
+    assert clean["k_used"] == 3.0 and clean["noise_estimate"] < 0.005
 
 
 def check_absolute_radius(base):

@@ -175,6 +175,8 @@ std::map<std::string, QVariant> SummaryValues(const Outcome& outcome) {
   v["k2_min"] = s.k2Min;
   v["k2_max"] = s.k2Max;
   v["absolute_radius"] = s.radius;
+  v["k_used"] = s.k;
+  v["noise_estimate"] = s.noiseOverEdge;
   v["mean_edge_length"] = s.meanEdge;
   v["epsilon"] = s.epsilon;
   v["eta"] = s.eta;

@@ -67,7 +67,8 @@ Outcome Run(MeshDocument& md, const nvv::FilterOptions& options, const QString& 
 // The run's summary as named values (PyMeshLab hands them to the script as a dict):
 // surface_vertices, crease_vertices, corner_vertices, unclassified_vertices, capped_vertices,
 // thinned_vertices,
-// k1_min, k1_max, k2_min, k2_max, absolute_radius, mean_edge_length, epsilon, eta,
+// k1_min, k1_max, k2_min, k2_max, absolute_radius, k_used (k, or automatic k's choice),
+// noise_estimate (noise along the normals / mean edge length), mean_edge_length, epsilon, eta,
 // sign_aware_rule, seconds, seconds_pass1, seconds_pass2,
 // crease_edge_count, crease_lines, closed_crease_lines, line_end_corners, patches,
 // smallest_patch_faces, largest_patch_faces (0 when crease_edges is off and no patch colours).

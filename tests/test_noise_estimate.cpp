@@ -1,0 +1,84 @@
+// The noise estimate (noise_estimate.h) against the noise put on the mesh, and automatic k.
+// Its scale was calibrated on the noisy planes; the other shapes were not looked at.
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+#include "core/noise_estimate.h"
+
+namespace {
+
+using nvv_test::TMesh;
+
+double Estimate(const TMesh& m) {
+  nvv::SurfaceGraph g;
+  nvv::BuildSurfaceGraph(m, g, 1);
+  return nvv::EstimateNoise(g, 0).sigmaOverEdge;
+}
+
+// Noise sigma * l_ave along the clean mesh's normals; the estimate, in units of l_ave.
+double EstimateAt(TMesh& m, double sigma, unsigned seed) {
+  nvv_test::NoiseAlongNormals(m, sigma * nvv_shapes::MeanEdge(m), seed);
+  return Estimate(m);
+}
+
+struct Shape {
+  const char* name;
+  void (*build)(TMesh&);
+};
+
+void PlaneRegular(TMesh& m) { nvv_shapes::ParametricGrid(m, 80, 80, [](double s, double t) { return vcg::Point3d(79 * s, 79 * t, 0); }); }
+void PlaneIrregular(TMesh& m) { nvv_shapes::ParametricGrid(m, 80, 80, [](double s, double t) { return vcg::Point3d(79 * s, 79 * t, 0); }, 0.5, 7); }
+void Sphere(TMesh& m) { nvv_shapes::UVSphere(m, 20, 120, 60, 0.3, 3); }
+void Torus(TMesh& m) { nvv_shapes::Torus(m, 24, 8, 150, 50, 0.3, 5); }
+void Cube(TMesh& m) { nvv_shapes::Cube(m, 8, 25); }
+void Cad(TMesh& m) { nvv_shapes::CadPart(m); }
+
+const Shape kCalibration[] = {{"plane", PlaneRegular}, {"irregular plane", PlaneIrregular}};
+const Shape kHeldOut[] = {{"sphere", Sphere}, {"torus", Torus}, {"cube", Cube}, {"CAD part", Cad}};
+const double kNoise[] = {0.01, 0.02, 0.05, 0.1, 0.2};
+
+TEST(NoiseEstimate, NoisyPlanesGiveTheirNoise) {
+  for (const Shape& s : kCalibration)
+    for (double n : kNoise) {
+      TMesh m;
+      s.build(m);
+      const double e = EstimateAt(m, n, 11);
+      std::printf("%-16s noise %5.1f %%: estimate %6.2f %%\n", s.name, 100 * n, 100 * e);
+      EXPECT_NEAR(e / n, 1.0, 0.1) << s.name << " at " << 100 * n << " %";
+    }
+}
+
+TEST(NoiseEstimate, CurvedAndCreasedShapesGiveTheirNoise) {
+  for (const Shape& s : kHeldOut)
+    for (double n : kNoise) {
+      TMesh m;
+      s.build(m);
+      const double e = EstimateAt(m, n, 13);
+      std::printf("%-16s noise %5.1f %%: estimate %6.2f %%\n", s.name, 100 * n, 100 * e);
+      EXPECT_NEAR(e / n, 1.0, 0.15) << s.name << " at " << 100 * n << " %";
+    }
+}
+
+TEST(NoiseEstimate, CleanMeshesAreNearlyNoiseFree) {
+  for (const Shape* set : {kCalibration, kHeldOut})
+    for (int i = 0; i < (set == kCalibration ? 2 : 4); ++i) {
+      TMesh m;
+      set[i].build(m);
+      const double e = Estimate(m);
+      std::printf("%-16s clean: estimate %6.3f %%\n", set[i].name, 100 * e);
+      EXPECT_LT(e, 0.005) << set[i].name;
+    }
+}
+
+TEST(NoiseEstimate, AutomaticKGrowsWithTheNoise) {
+  EXPECT_EQ(nvv::AutoK(0), 3.0);
+  EXPECT_EQ(nvv::AutoK(0.02), 3.0);
+  EXPECT_DOUBLE_EQ(nvv::AutoK(0.06), 4.0);
+  EXPECT_EQ(nvv::AutoK(0.1), 5.0);
+  EXPECT_EQ(nvv::AutoK(0.5), 5.0);
+}
+
+}  // namespace
