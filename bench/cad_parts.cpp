@@ -217,6 +217,7 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
   Csv csv(outDir, "cad_f1.csv", "mesh,noise,method,angle,precision,recall,f1,near_precision,near_recall,near_f1");
   Csv ccsv(outDir, "cad_curvature.csv",
            "mesh,noise,estimator,vertices,normal_med,normal_p90,normal_mean,curv_med,curv_p90,curv_mean");
+  Csv ncsv(outDir, "cad_noise.csv", "mesh,noise,noise_estimate,k_auto");
   Csv mcsv(outDir, "cad_meshes.csv", "mesh,vertices,triangles,l_ave,slivers_pct,max_valence,sharp_vertices,crease_angles");
   std::ostringstream curvTable, meshTable, infoTable;
   curvTable << "| mesh | noise | vertices | " << ests[0].name << " | " << ests[1].name << " | " << ests[2].name
@@ -276,6 +277,16 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
       };
       const Score nvvDef = ScoreBoth(featuresOf(res), cm.sharp, ring);
       row("NVV defaults", nvv::Params().creaseAngleDeg, nvvDef);
+      // automatic k (Params::autoK): its classes, the noise it estimated and the k it chose
+      std::vector<nvv::VertexResult> resAuto;
+      {
+        nvv::Params p = ests[0].params;
+        p.autoK = true;
+        nvv::Summary sum;
+        nvv::RunNormalVectorVoting(c.graph, p, resAuto, sum);
+        row("NVV auto k", p.creaseAngleDeg, ScoreBoth(featuresOf(resAuto), cm.sharp, ring));
+        std::fprintf(ncsv.f(), "%s,%g,%g,%g\n", cm.name.c_str(), noise * 100, 100 * sum.noiseOverEdge, sum.k);
+      }
       // the votes alone, as in the paper (no sharp edges of clean meshes, sharp_edges.h)
       Score votesOnly;
       {
@@ -354,6 +365,19 @@ int RunCad(const std::string& outDir, const std::string& partsDir) {
                      en.size(), n.median, n.p90, n.mean, k.median, k.p90, k.mean);
       }
       curvTable << " |\n";
+      {  // automatic k, for the CSV only
+        std::vector<double> en, ek;
+        for (std::size_t i : near) {
+          if (resAuto[i].cls != nvv::VertexClass::Surface) continue;
+          const PointTruth& t = cm.point[i];
+          en.push_back(nvv_test::AngleDeg(nvv_test::E(resAuto[i].normal), t.n));
+          ek.push_back(100 * std::abs(resAuto[i].k1 - t.k1) * lave);
+          ek.push_back(100 * std::abs(resAuto[i].k2 - t.k2) * lave);
+        }
+        const Stat3 n = Stats(en), k = Stats(ek);
+        std::fprintf(ccsv.f(), "%s,%g,%s,%zu,%g,%g,%g,%g,%g,%g\n", cm.name.c_str(), noise * 100, "NVV auto k", en.size(),
+                     n.median, n.p90, n.mean, k.median, k.p90, k.mean);
+      }
     }
   }
 

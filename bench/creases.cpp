@@ -24,8 +24,10 @@ void CalibrateSigns(std::vector<Estimator>& ests);
 
 namespace {
 
-std::vector<char> NvvFeatures(const TMesh& m, double k, double phi, bool thin = true, bool ridgeFit = true) {
+std::vector<char> NvvFeatures(const TMesh& m, double k, double phi, bool thin = true, bool ridgeFit = true,
+                              bool autoK = false) {
   nvv::Params p = nvv_test::WithK(k);
+  p.autoK = autoK;
   p.thinCreases = thin;
   p.ridgeFit = ridgeFit;
   p.creaseAngleDeg = std::max(1.0, std::min(89.0, phi));
@@ -49,10 +51,10 @@ std::vector<CreaseShape> Shapes(bool all) {
 int RunF1(const std::string& outDir) {
   const std::vector<double> noises = {0, 0.01, 0.05, 0.10, 0.20};
   Csv csv(outDir, "creases_f1.csv", "shape,alpha,noise,method,precision,recall,f1");
-  std::printf("| shape | noise | NVV k=1 | NVV k=3 | NVV k=5 | NVV k=3 strength thinning | NVV k=3 paper band | MeshLab dihedral | CGAL sharp edges |\n"
-              "|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| shape | noise | NVV k=1 | NVV k=3 | NVV k=5 | NVV k=3 strength thinning | NVV k=3 paper band | MeshLab dihedral | CGAL sharp edges | NVV auto k |\n"
+              "|---|---|---|---|---|---|---|---|---|---|\n");
   const char* names[] = {"NVV k=1", "NVV k=3", "NVV k=5", "NVV k=3 strength thinning", "NVV k=3 paper band",
-                         "MeshLab dihedral", "CGAL sharp edges"};
+                         "MeshLab dihedral", "CGAL sharp edges", "NVV auto k"};
   const int methods = int(sizeof(names) / sizeof(names[0]));
   for (const CreaseShape& s : Shapes(true))
     for (double noise : noises) {
@@ -72,7 +74,8 @@ int RunF1(const std::string& outDir) {
         Context c(m);
         std::vector<std::vector<char>> found = {NvvFeatures(m, 1, phi), NvvFeatures(m, 3, phi), NvvFeatures(m, 5, phi),
                                                 NvvFeatures(m, 3, phi, true, false), NvvFeatures(m, 3, phi, false),
-                                                DihedralCreaseVertices(m, phi), CgalSharpVertices(c.plain, phi)};
+                                                DihedralCreaseVertices(m, phi), CgalSharpVertices(c.plain, phi),
+                                                NvvFeatures(m, 3, phi, true, true, true)};
         truthAll.insert(truthAll.end(), truth.begin(), truth.end());
         useAll.insert(useAll.end(), use.begin(), use.end());
         for (int j = 0; j < methods; ++j) foundAll[j].insert(foundAll[j].end(), found[j].begin(), found[j].end());

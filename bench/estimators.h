@@ -95,6 +95,23 @@ inline Estimator Nvv(double k, nvv::CurvatureFit fit, int rounds = nvv::Params()
   return e;
 }
 
+// The defaults with k chosen from the mesh's noise (Params::autoK, noise_estimate.h); k = 3 is
+// only its floor, for the sections that filter estimators by k.
+inline Estimator NvvAutoK() {
+  Estimator e = Nvv(3, nvv::CurvatureFit::SheetQuadric);
+  e.name = "NVV quadric (default) k=auto";
+  e.kind = 1;
+  e.params.autoK = true;
+  const nvv::Params p = e.params;
+  e.fn = [p](Context& c, std::vector<Estimate>& out) {
+    std::vector<nvv::VertexResult> res;
+    nvv::Summary sum;
+    nvv::RunNormalVectorVoting(c.graph, p, res, sum);
+    FromNvv(res, out);
+  };
+  return e;
+}
+
 inline Estimator Vcg(const char* name, VcgMethod method, double k = 0) {
   return {name, method == VcgMethod::PCA && k > 0 ? 2 : 3, k, [method, k](Context& c, std::vector<Estimate>& out) {
             VcgCurvature(c.m, method, k * c.lave, 1.0, out);

@@ -27,8 +27,10 @@ namespace {
 
 std::vector<char> TruthFromDihedral(const TMesh& clean, double minAngleDeg) { return DihedralCreaseVertices(clean, minAngleDeg); }
 
-std::vector<unsigned char> NvvClasses(const TMesh& m, double k, double phi, bool thin = true, bool ridgeFit = true) {
+std::vector<unsigned char> NvvClasses(const TMesh& m, double k, double phi, bool thin = true, bool ridgeFit = true,
+                                      bool autoK = false) {
   nvv::Params p = nvv_test::WithK(k);
+  p.autoK = autoK;
   p.creaseAngleDeg = phi;
   p.thinCreases = thin;
   p.ridgeFit = ridgeFit;
@@ -50,11 +52,11 @@ int RunReal(const std::string& outDir) {
   const double phi = 30;
   const std::vector<double> noises = {0, 0.001, 0.01, 0.05, 0.10};
   const char* names[] = {"NVV k=1", "NVV k=3", "NVV k=5", "NVV k=3 strength thinning", "NVV k=3 paper band",
-                         "MeshLab dihedral", "CGAL sharp edges"};
+                         "MeshLab dihedral", "CGAL sharp edges", "NVV auto k"};
   const int methods = int(sizeof(names) / sizeof(names[0]));
   Csv csv(outDir, "real_f1.csv", "mesh,noise,method,precision,recall,f1");
-  std::printf("| mesh | noise | NVV k=1 | NVV k=3 | NVV k=5 | NVV k=3 strength thinning | NVV k=3 paper band | MeshLab dihedral | CGAL sharp edges |\n"
-              "|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| mesh | noise | NVV k=1 | NVV k=3 | NVV k=5 | NVV k=3 strength thinning | NVV k=3 paper band | MeshLab dihedral | CGAL sharp edges | NVV auto k |\n"
+              "|---|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string name : {"fandisk.off", "abc_00000006.obj"}) {
     TMesh clean;
     if (!LoadMesh(dir + name, clean)) {
@@ -75,7 +77,8 @@ int RunReal(const std::string& outDir) {
       std::vector<std::vector<char>> found = {IsFeature(cls[0]), IsFeature(cls[1]), IsFeature(cls[2]),
                                               IsFeature(NvvClasses(m, 3, phi, true, false)),
                                               IsFeature(NvvClasses(m, 3, phi, false)),
-                                              DihedralCreaseVertices(m, phi), CgalSharpVertices(c.plain, phi)};
+                                              DihedralCreaseVertices(m, phi), CgalSharpVertices(c.plain, phi),
+                                              IsFeature(NvvClasses(m, 3, phi, true, true, true))};
       std::printf("| %s | %g %% |", name.c_str(), noise * 100);
       for (int j = 0; j < methods; ++j) {
         const F1 f = ScoreFeatures(found[j], truth, use);

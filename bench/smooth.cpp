@@ -158,6 +158,7 @@ std::vector<Estimator> SmoothEstimators(bool torus) {
   std::vector<Estimator> v;
   const std::vector<double> ks = torus ? std::vector<double>{1, 3, 5, 8} : std::vector<double>{1, 3, 5};
   for (double k : ks) v.push_back(Nvv(k, nvv::CurvatureFit::SheetQuadric));
+  v.push_back(NvvAutoK());
   for (double k : ks) v.push_back(Nvv(k, nvv::CurvatureFit::SheetQuadric, 1));
   for (double k : ks) v.push_back(Nvv(k, nvv::CurvatureFit::PaperTaubin));
   for (double k : ks) v.push_back(Nvv(k, nvv::CurvatureFit::EulerLeastSquares));

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "sharp_edges.h"
 #include "small_ldlt.h"
 #include "tangent_frame.h"
 #include "threads.h"
@@ -78,10 +79,15 @@ NoiseEstimate EstimateNoise(const SurfaceGraph& g, int threads) {
   }
   sigma.erase(std::remove_if(sigma.begin(), sigma.end(), [](double x) { return !(x >= 0); }), sigma.end());
   est.samples = int(sigma.size());
-  if (sigma.empty()) return est;
+  est.fromDihedrals = MeshNoiseAngle(g) / tuning::kNoiseAnglePerSigma;
+  if (sigma.empty()) {
+    est.sigmaOverEdge = est.fromDihedrals;
+    return est;
+  }
   const std::size_t q = std::size_t(tuning::kNoiseQuantile * double(sigma.size() - 1));
   std::nth_element(sigma.begin(), sigma.begin() + std::ptrdiff_t(q), sigma.end());
-  est.sigmaOverEdge = tuning::kNoiseQuantileScale * sigma[q];
+  est.fromTwoRings = tuning::kNoiseQuantileScale * sigma[q];
+  est.sigmaOverEdge = std::min(est.fromTwoRings, est.fromDihedrals);
   return est;
 }
 

@@ -7,7 +7,11 @@
 // corners leave far larger residuals, so the estimate is a low quantile of the samples
 // (kNoiseQuantile, a quarter: robust to half the samples lying near features), scaled to the
 // standard deviation by the quantile's calibration on noisy planes (kNoiseQuantileScale), and
-// given in units of the mean edge length l_ave, as the benchmarks' noise is.
+// given in units of the mean edge length l_ave, as the benchmarks' noise is. On a coarse CAD
+// tessellation every two-ring spans a crease or a curved face cut into strips and this reads far
+// too high; there the lowest tenth of the dihedral angles (sharp_edges.h's noise angle, exactly 0
+// on a CAD export) over its value per unit noise on noisy planes is the lower, and the estimate
+// is the lower of the two (each reads high where it fails, neither low).
 //
 // Automatic k (Params::autoK): k = 3 up to kAutoKLowNoise, rising linearly to kAutoKMax at
 // kAutoKHighNoise and staying there (docs/accuracy.md, "Which k", measures it against k = 3).
@@ -19,7 +23,9 @@
 namespace nvv {
 
 struct NoiseEstimate {
-  double sigmaOverEdge = 0;  // standard deviation of the noise along the normals / l_ave
+  double sigmaOverEdge = 0;  // standard deviation of the noise along the normals / l_ave: the lower of
+  double fromTwoRings = 0;   // the two-rings' residuals (curvature absorbed; too high where features fill every two-ring)
+  double fromDihedrals = 0;  // and the mesh's noise angle (sharp_edges.h; too high on curved meshes, 0 on CAD exports)
   int samples = 0;           // vertices whose two-ring was fitted
 };
 

@@ -29,17 +29,6 @@ double EdgeAngle(const SurfaceGraph& g, int f, int o, int a, int b) {
   return std::acos(std::max(-1.0, std::min(1.0, g.faceNormal[f].dot(NormalOrientedLike(g, f, o, a, b)))));
 }
 
-// The mesh's noise angle: the lowest tenth of the dihedral angles over the edges of at most
-// kMedianEdgeAngleFaces evenly spread faces. Exactly 0 on a CAD export, whose planes and strips
-// hold flat edges; 0.2 deg under 1 % noise, 0.85 deg under 5 %.
-double MeshNoiseAngle(const SurfaceGraph& g) {
-  std::vector<double> angles;
-  g.ForEachSampledEdgePair([&](int f, int o, int a, int b) { angles.push_back(EdgeAngle(g, f, o, a, b)); });
-  if (angles.empty()) return 0;
-  std::nth_element(angles.begin(), angles.begin() + angles.size() / 10, angles.end());
-  return angles[angles.size() / 10];
-}
-
 // Distance of c from the line through a and b.
 double HeightOver(const SurfaceGraph& g, int a, int b, int c) {
   const Eigen::Vector3d e = g.pos[b] - g.pos[a];
@@ -195,6 +184,14 @@ bool ClassifyCleanVerticesBySharpEdges(const SurfaceGraph& g, const Params& p, i
   for (int v = 0; v < n; ++v)
     if (res[v].cls != VertexClass::Invalid && g.Referenced(v)) changed += Apply(g, v, verdict[v], res[v]);
   return true;
+}
+
+double MeshNoiseAngle(const SurfaceGraph& g) {
+  std::vector<double> angles;
+  g.ForEachSampledEdgePair([&](int f, int o, int a, int b) { angles.push_back(EdgeAngle(g, f, o, a, b)); });
+  if (angles.empty()) return 0;
+  std::nth_element(angles.begin(), angles.begin() + angles.size() / 10, angles.end());
+  return angles[angles.size() / 10];
 }
 
 }  // namespace nvv

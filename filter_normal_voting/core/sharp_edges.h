@@ -34,6 +34,11 @@
 
 namespace nvv {
 
+// The mesh's noise angle (radians): the lowest tenth of the dihedral angles over the edges of at
+// most kMedianEdgeAngleFaces evenly spread faces. Exactly 0 on a CAD export, whose planes and
+// strips hold flat edges; 0.2 deg under 1 % noise, 0.85 deg under 5 %.
+double MeshNoiseAngle(const SurfaceGraph& g);
+
 // On a clean mesh, reclassifies every vertex from its sharp edges (Params::sharpEdgeAngleDeg > 0)
 // and returns true, with how many vertices changed class; false where the votes stay.
 bool ClassifyCleanVerticesBySharpEdges(const SurfaceGraph& g, const Params& p, int threads,
