@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -57,6 +58,34 @@ struct CurvatureRound {
   bool NotSurface(int x) const { return !surface[x]; }
 };
 
+// Whether v's same-sheet samples can support the fitted curvatures. No circle through v and a
+// sample at distance d is tighter than radius d / 2, so a principal curvature above
+// kMaxCurvatureOverNearest / d_near (d_near: the nearest sample) came from the fit's freedom, not
+// from the samples; and samples along one line (the tangent spread's smaller axis below
+// kFitMinSpread of the larger) leave the curvature across that line free. Both happen on a
+// surface vertex shut in between close creases or beside a micro-step (fandisk: one vertex whose
+// four samples lie on a line fitted k1 = 1084, 45 / l_ave): such a vertex gets no curvature.
+bool SupportedByNeighbourhood(const TangentFrame& F, const std::vector<SheetSample>& samples,
+                              const PrincipalCurvatures& pc) {
+  double nearest2 = std::numeric_limits<double>::infinity();
+  double suu = 0, suv = 0, svv = 0;
+  for (const auto& s : samples) {
+    const double d2 = s.d.squaredNorm();
+    if (!(d2 > 0)) continue;  // v itself
+    nearest2 = std::min(nearest2, d2);
+    const double u = F.e1.dot(s.d), w = F.e2.dot(s.d);
+    suu += u * u;
+    suv += u * w;
+    svv += w * w;
+  }
+  if (!std::isfinite(nearest2)) return false;
+  // Eigenvalues of [[suu, suv], [suv, svv]]: the spread of the samples over the tangent plane.
+  const double mean = 0.5 * (suu + svv), dev = std::sqrt(0.25 * (suu - svv) * (suu - svv) + suv * suv);
+  if (!(mean - dev >= tuning::kFitMinSpread * (mean + dev))) return false;
+  const double bound = tuning::kMaxCurvatureOverNearest / std::sqrt(nearest2);
+  return std::abs(pc.k1) <= bound && std::abs(pc.k2) <= bound;
+}
+
 // The quadric fit of v over its same-sheet ball. The fit needs the ball but no distances, so the
 // flood finds it (ball_flood.h). A fit whose ball reaches a crease, or whose border is within
 // tuning::kBorderCubicFraction of g_m, is one-sided and gets no cubic.
@@ -73,8 +102,10 @@ PrincipalCurvatures FitByQuadric(const CurvatureRound& R, int v, const TangentFr
     if (!R.onBorder.empty() && R.onBorder[x] && (g.pos[x] - g.pos[v]).squaredNorm() < R.nearBorder2) oneSided = true;
     sc.samples.push_back({g.pos[x] - g.pos[v], R.NormalOf(x)});
   }
-  return SheetQuadricFit(F, sc.samples, R.s.radius, R.slopeWeight, R.cosPhi, R.p.cubicFit && !oneSided, !R.last,
-                         R.p.levers);
+  PrincipalCurvatures pc = SheetQuadricFit(F, sc.samples, R.s.radius, R.slopeWeight, R.cosPhi,
+                                           R.p.cubicFit && !oneSided, !R.last, R.p.levers);
+  if (pc.ok && !SupportedByNeighbourhood(F, sc.samples, pc)) pc.ok = false;
+  return pc;
 }
 
 // The paper's curvature votes (Eq. 13-17) of v's geodesic neighbourhood, as Taubin's matrix or

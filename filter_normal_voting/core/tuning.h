@@ -151,6 +151,13 @@ constexpr double kFitMinRcond = 1e-10;
 // Pivot spread of the shortcut factorisations (heights alone, slopes alone, cubic's Schur
 // complement) below which they are not used.
 constexpr double kFitMinPivotRatio = 1e-12;
+// Curvature a neighbourhood supports (surface_curvature.cpp): a principal curvature above this over
+// the nearest sample's distance (a circle through v and that sample is no tighter than radius d / 2)
+// is refused ...
+constexpr double kMaxCurvatureOverNearest = 2.0;
+// ... and so is a fit whose samples' tangent spread along its smaller axis is below this share of
+// the larger (samples on one line leave the curvature across it free).
+constexpr double kFitMinSpread = 0.01;
 // Samples a fit needs: any fit, the row-variance levers, the cubic, the tilt test (which needs
 // more than this), the circle term.
 constexpr int kFitMinSamples = 3;
