@@ -164,7 +164,9 @@ Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std::vector
   PassProgress ridges(cb, g.VertexCount(), share, share, "Normal vector voting: crease ridges");
   end = ThinCreases(g, p, s, threads, ridges, out, sum.thinned);
   if (end != PassEnd::Done) return Unfinished(end);
-  sum.sharpEdges = ClassifyCleanVerticesBySharpEdges(g, p, threads, out, sum.sharpEdgeChanged);
+  const SharpEdgeRole sharp = ClassifyBySharpEdges(g, p, threads, out, sum.sharpEdgeChanged);
+  sum.sharpEdges = sharp == SharpEdgeRole::DecideAll;
+  sum.sharpEdgesAdded = sharp == SharpEdgeRole::AddFeatures;
   sum.secondsPass1 = SecondsSince(t0);
 
   const auto t1 = Clock::now();

@@ -165,12 +165,14 @@ bool Apply(const SurfaceGraph& g, int v, const SharpVerdict& s, VertexResult& r)
 
 }  // namespace
 
-bool ClassifyCleanVerticesBySharpEdges(const SurfaceGraph& g, const Params& p, int threads,
-                                       std::vector<VertexResult>& res, std::size_t& changed) {
+SharpEdgeRole ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, int threads, std::vector<VertexResult>& res,
+                                   std::size_t& changed) {
   changed = 0;
-  if (!(p.sharpEdgeAngleDeg > 0)) return false;
+  if (!(p.sharpEdgeAngleDeg > 0)) return SharpEdgeRole::None;
   const double noise = MeshNoiseAngle(g);
-  if (!(noise < DegToRad(tuning::kCleanMeshNoiseDeg))) return false;  // a noisy mesh: the votes decide everywhere
+  if (!(noise < DegToRad(tuning::kLightNoiseDeg))) return SharpEdgeRole::None;  // noisy: the votes decide everywhere
+  const SharpEdgeRole role = noise < DegToRad(tuning::kCleanMeshNoiseDeg) ? SharpEdgeRole::DecideAll
+                                                                           : SharpEdgeRole::AddFeatures;
   Thresholds t;
   t.sharp = DegToRad(std::min(p.sharpEdgeAngleDeg, p.creaseAngleDeg));
   t.always = DegToRad(std::max(tuning::kSharpEdgeAlwaysDeg, p.sharpEdgeAngleDeg));
@@ -181,9 +183,13 @@ bool ClassifyCleanVerticesBySharpEdges(const SurfaceGraph& g, const Params& p, i
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
   for (int v = 0; v < n; ++v)
     if (res[v].cls != VertexClass::Invalid && g.Referenced(v)) verdict[v] = JudgeVertex(g, v, t);
-  for (int v = 0; v < n; ++v)
-    if (res[v].cls != VertexClass::Invalid && g.Referenced(v)) changed += Apply(g, v, verdict[v], res[v]);
-  return true;
+  for (int v = 0; v < n; ++v) {
+    if (res[v].cls == VertexClass::Invalid || !g.Referenced(v)) continue;
+    // Lightly noisy: a vertex without sharp edges keeps the votes' class.
+    if (role == SharpEdgeRole::AddFeatures && VertexClass(verdict[v].cls) == VertexClass::Surface) continue;
+    changed += Apply(g, v, verdict[v], res[v]);
+  }
+  return role;
 }
 
 double MeshNoiseAngle(const SurfaceGraph& g) {

@@ -5,11 +5,15 @@
 // of k l_ave blurs (two crease rows closer than the ball's radius merge, and thinning the merged
 // band to one ridge drops real crease vertices). On a clean mesh this stage
 // therefore decides every class from the mesh edges themselves; where noise scatters the faces'
-// normals, pass 1's votes and the ridge fit decide, as in the paper.
+// normals, pass 1's votes and the ridge fit decide, as in the paper; in between, on a lightly noisy
+// mesh, the sharp edges add the creases the votes miss (those below the crease angle, rows closer
+// than the ball) and the votes keep the rest.
 //
-//  - The stage runs on a clean mesh only: the lowest tenth of its dihedral angles (its noise
-//    angle) below kCleanMeshNoiseDeg. Every CAD export measured has exactly 0 there (its planes and
-//    strips hold flat edges), 1 % noise about 0.2 deg, 5 % 0.85 deg. On other meshes the votes and
+//  - The stage decides every class on a clean mesh: the lowest tenth of its dihedral angles (its
+//    noise angle) below kCleanMeshNoiseDeg. Every CAD export measured has exactly 0 there (its
+//    planes and strips hold flat edges), 1 % noise about 0.2 deg, 5 % 0.85 deg. Below
+//    kLightNoiseDeg (about 8 % noise on a uniform mesh) it only adds: a vertex on sharp edges
+//    becomes a crease or corner, any other keeps the votes' class. On noisier meshes the votes and
 //    the ridge fit decide alone, to the bit.
 //  - An edge (v, x) between faces (v, x, c) and (x, v, d) is sharp where its dihedral angle theta
 //    is at least the sharp-edge angle (or the crease angle, if lower), stands well above what the
@@ -39,10 +43,17 @@ namespace nvv {
 // strips hold flat edges; 0.2 deg under 1 % noise, 0.85 deg under 5 %.
 double MeshNoiseAngle(const SurfaceGraph& g);
 
-// On a clean mesh, reclassifies every vertex from its sharp edges (Params::sharpEdgeAngleDeg > 0)
-// and returns true, with how many vertices changed class; false where the votes stay.
-bool ClassifyCleanVerticesBySharpEdges(const SurfaceGraph& g, const Params& p, int threads,
-                                       std::vector<VertexResult>& res, std::size_t& changed);
+// What a mesh's sharp edges did to the votes' classes.
+enum class SharpEdgeRole {
+  None,         // a noisy mesh (or Params::sharpEdgeAngleDeg = 0): the votes' classes stand
+  DecideAll,    // a clean mesh: every class from the sharp edges
+  AddFeatures,  // a lightly noisy mesh: vertices on sharp edges become creases and corners, the rest keep the votes' class
+};
+
+// Reclassifies vertices from the mesh's sharp edges as the noise angle allows (see above); `changed`:
+// how many vertices changed class.
+SharpEdgeRole ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, int threads, std::vector<VertexResult>& res,
+                                   std::size_t& changed);
 
 }  // namespace nvv
 

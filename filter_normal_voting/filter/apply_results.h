@@ -282,6 +282,9 @@ inline std::string SummaryLine(const Summary& s) {
   if (s.sharpEdges)
     std::snprintf(sharp, sizeof sharp, "; a clean mesh: classes from its sharp edges, %zu changed from the votes'",
                   s.sharpEdgeChanged);
+  else if (s.sharpEdgesAdded)
+    std::snprintf(sharp, sizeof sharp, "; lightly noisy: %zu vertices on its sharp edges changed class",
+                  s.sharpEdgeChanged);
   char buf[640];
   std::snprintf(buf, sizeof buf,
                 "Normal vector voting: %zu surface, %zu crease, %zu corner, %zu unclassified vertices "

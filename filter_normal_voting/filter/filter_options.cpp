@@ -40,8 +40,9 @@ std::vector<ParamSpec> AlgorithmParameters() {
      "On a mesh free of noise (a CAD export) the classes come from the mesh edges instead of the votes: an "
      "edge whose faces' normals are at least this far apart (and the crease angle, if lower) and that turns "
      "more than the lines beside it (a curved face cut into strips turns at every strip) is a crease edge, "
-     "so every vertex of a crease is found however close two creases run. Noisy meshes are not affected. "
-     "0: the votes everywhere (the paper).",
+     "so every vertex of a crease is found however close two creases run. On a lightly noisy mesh (up to about "
+     "5 % of the edge length) such edges add the creases the votes miss and the votes keep the rest; noisier "
+     "meshes are not affected. 0: the votes everywhere (the paper).",
      10.0, 0.0, limits::kMaxAngleDeg, {}, {}, false},
     {"stop_at_creases", ParamType::Bool, "Stop curvature at creases",
      "When estimating curvature, do not let a neighbourhood grow across crease and corner vertices, "
