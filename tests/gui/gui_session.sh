@@ -24,7 +24,9 @@ gui_start_display() {
     if [ ! -e "/tmp/.X$d-lock" ] && [ ! -e "/tmp/.X11-unix/X$d" ]; then disp=$d; break; fi
   done
   [ -n "$disp" ] || { echo "gui smoke: no free X display"; exit 1; }
-  Xvfb ":$disp" -screen 0 1280x1024x24 -nolisten tcp >/dev/null 2>&1 &
+  # -noreset: without it the server resets when its last client leaves, and a client that connects
+  # during the reset (MeshLab, right after the readiness probe below) is refused.
+  Xvfb ":$disp" -screen 0 1280x1024x24 -nolisten tcp -noreset >/dev/null 2>&1 &
   gui_xpid=$!
   export DISPLAY=":$disp"
   for _ in $(seq 50); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
