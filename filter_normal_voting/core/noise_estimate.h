@@ -26,6 +26,7 @@ struct NoiseEstimate {
   double sigmaOverEdge = 0;  // standard deviation of the noise along the normals / l_ave: the lower of
   double fromTwoRings = 0;   // the two-rings' residuals (curvature absorbed; too high where features fill every two-ring)
   double fromDihedrals = 0;  // and the mesh's noise angle (sharp_edges.h; too high on curved meshes, 0 on CAD exports)
+  double noiseAngle = 0;     // that noise angle itself (radians), which the sharp edges also read
   int samples = 0;           // vertices whose two-ring was fitted
 };
 

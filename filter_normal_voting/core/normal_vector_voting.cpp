@@ -142,7 +142,8 @@ Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std::vector
   const std::string refusal = ValidateRun(g, p);
   if (!refusal.empty()) return Refused(refusal);
   // The noise along the normals (noise_estimate.h): reported always, and automatic k's input.
-  sum.noiseOverEdge = EstimateNoise(g, p.threads).sigmaOverEdge;
+  const NoiseEstimate noise = EstimateNoise(g, p.threads);
+  sum.noiseOverEdge = noise.sigmaOverEdge;
   Params withK = p;
   if (p.autoK) withK.k = AutoK(sum.noiseOverEdge);
   sum.k = withK.k;
@@ -164,7 +165,7 @@ Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std::vector
   PassProgress ridges(cb, g.VertexCount(), share, share, "Normal vector voting: crease ridges");
   end = ThinCreases(g, p, s, threads, ridges, out, sum.thinned);
   if (end != PassEnd::Done) return Unfinished(end);
-  const SharpEdgeRole sharp = ClassifyBySharpEdges(g, p, threads, out, sum.sharpEdgeChanged);
+  const SharpEdgeRole sharp = ClassifyBySharpEdges(g, p, noise.noiseAngle, threads, out, sum.sharpEdgeChanged);
   sum.sharpEdges = sharp == SharpEdgeRole::DecideAll;
   sum.sharpEdgesAdded = sharp == SharpEdgeRole::AddFeatures;
   sum.secondsPass1 = SecondsSince(t0);

@@ -165,11 +165,10 @@ bool Apply(const SurfaceGraph& g, int v, const SharpVerdict& s, VertexResult& r)
 
 }  // namespace
 
-SharpEdgeRole ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, int threads, std::vector<VertexResult>& res,
-                                   std::size_t& changed) {
+SharpEdgeRole ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, double noise, int threads,
+                                   std::vector<VertexResult>& res, std::size_t& changed) {
   changed = 0;
   if (!(p.sharpEdgeAngleDeg > 0)) return SharpEdgeRole::None;
-  const double noise = MeshNoiseAngle(g);
   if (!(noise < DegToRad(tuning::kLightNoiseDeg))) return SharpEdgeRole::None;  // noisy: the votes decide everywhere
   const SharpEdgeRole role = noise < DegToRad(tuning::kCleanMeshNoiseDeg) ? SharpEdgeRole::DecideAll
                                                                            : SharpEdgeRole::AddFeatures;

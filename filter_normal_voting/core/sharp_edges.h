@@ -50,10 +50,10 @@ enum class SharpEdgeRole {
   AddFeatures,  // a lightly noisy mesh: vertices on sharp edges become creases and corners, the rest keep the votes' class
 };
 
-// Reclassifies vertices from the mesh's sharp edges as the noise angle allows (see above); `changed`:
-// how many vertices changed class.
-SharpEdgeRole ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, int threads, std::vector<VertexResult>& res,
-                                   std::size_t& changed);
+// Reclassifies vertices from the mesh's sharp edges as its noise angle (MeshNoiseAngle) allows (see
+// above); `changed`: how many vertices changed class.
+SharpEdgeRole ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, double noiseAngle, int threads,
+                                   std::vector<VertexResult>& res, std::size_t& changed);
 
 }  // namespace nvv
 
