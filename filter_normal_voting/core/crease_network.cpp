@@ -291,7 +291,7 @@ void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, int minF
 CreaseNetwork FindCreaseNetwork(const SurfaceGraph& g, const std::vector<VertexResult>& res, double radius,
                                 double creaseAngleDeg, bool cleanMesh) {
   CreaseNetwork net;
-  const double cosCrease = std::cos(DegToRad(creaseAngleDeg));
+  const double cosCrease = std::cos(DegToRad(std::max(creaseAngleDeg, tuning::kCornerPairEdgeMinAngleDeg)));
   std::vector<std::pair<Edge, float>> found;
   ForEachInteriorEdge(g, [&](int a, int b, int f, int o) {
     double cusp = 0;

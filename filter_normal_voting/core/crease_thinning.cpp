@@ -158,6 +158,13 @@ struct RidgeScratch {
   std::vector<Eigen::Vector3d> xyz;
 };
 
+// True when Eq. 10 with epsilon = eta = `epsilon` calls r a feature (pass 1's eigenvalues, in
+// their sign-aware order): would the votes make v a crease or corner at that angle.
+bool VotesFeatureAt(const VertexResult& r, double epsilon) {
+  const double Ss = r.lambda[0] - r.lambda[1], Sc = r.lambda[1] - r.lambda[2], Sn = r.lambda[2];
+  return !(Ss >= epsilon * Sc && Ss >= epsilon * epsilon * Sn);
+}
+
 // The better of two ridge fits at v: in the frame of pass 1's normal, and of the ball's mean
 // normal (the bisector of a crease's two sheets; in the frame of one sheet's normal, which pass
 // 1's E1 often is, the other sheet of a 90 deg crease is vertical).
@@ -198,6 +205,9 @@ PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res,
   AssignOnHugePages(ridge, g.VertexCount());
   const double floorRss = tuning::kRidgeResidualFloor * g.meanEdge * g.meanEdge;
   const double phi = DegToRad(creaseAngleDeg);
+  const double confirmEpsilon = EpsilonFromAngle(tuning::kRidgeConfirmAngleDeg);
+  const double confirmSigma = std::max(s.noiseSigma, tuning::kRidgeConfirmFloorEdges * g.meanEdge);
+  const double confirmMeanSquare = tuning::kRidgeConfirmNoise * tuning::kRidgeConfirmNoise * confirmSigma * confirmSigma;
   const double ridgeRadius =
       std::min(std::max(s.radius, tuning::kRidgeRadiusMin * g.meanEdge), tuning::kRidgeRadiusMax * g.meanEdge);
   return ParallelOverVertices<RidgeScratch>(g, threads, progress, [&](int v, RidgeScratch& sc) {
@@ -205,6 +215,7 @@ PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res,
     sc.flood.Run(v, ridgeRadius, s.maxNeighbourhood);
     const RidgeFitResult fit = StrongerRidgeFit(g, res[v], v, floorRss, sc);
     if (!fit.ok || fit.alphaRad < phi || fit.F < tuning::kRidgeMinF) return;
+    if (!VotesFeatureAt(res[v], confirmEpsilon) && fit.meanSquareAcross > confirmMeanSquare) return;
     ridge[v].F = float(fit.F);
     ridge[v].alphaRad = float(fit.alphaRad);
     for (int j = 0; j < 3; ++j) ridge[v].tangent[j] = float(fit.tangent[j]);

@@ -58,9 +58,10 @@ std::string ValidateRun(const SurfaceGraph& g, const Params& p) {
   return std::string();
 }
 
-// The radius, Eq. 8's sigma, Eq. 10's constants and the neighbourhood cap for this mesh.
-Pass1Settings SettingsFor(const SurfaceGraph& g, const Params& p) {
+// The radius, Eq. 8's sigma, Eq. 10's constants, the neighbourhood cap and the noise for this mesh.
+Pass1Settings SettingsFor(const SurfaceGraph& g, const Params& p, const NoiseEstimate& noise) {
   Pass1Settings s;
+  s.noiseSigma = noise.sigmaOverEdge * g.meanEdge;
   s.radius = p.absoluteRadius > 0 ? p.absoluteRadius : p.k * g.meanEdge;
   s.sigma = p.sigmaFraction * s.radius;
   s.epsilon = EpsilonFromAngle(p.creaseAngleDeg);
@@ -148,7 +149,7 @@ Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std::vector
   if (p.autoK) withK.k = AutoK(sum.noiseOverEdge);
   sum.k = withK.k;
   sum.autoK = p.autoK;
-  const Pass1Settings s = SettingsFor(g, withK);
+  const Pass1Settings s = SettingsFor(g, withK, noise);
   if (!std::isfinite(s.radius) || !(s.radius > 0))
     return Refused("The neighbourhood radius is not a positive finite number for this mesh.");
   RecordSettings(g, p, s, sum);

@@ -29,6 +29,7 @@ struct Pass1Settings {
   double epsilon = 2, eta = 2;
   bool signAware = true;
   int maxNeighbourhood = 1024;
+  double noiseSigma = 0;  // the noise along the normals (noise_estimate.h), in the mesh's units
 };
 
 // Runs pass 1 for vertex v; `march` is this thread's scratch. Writes cls, lambda, normal,

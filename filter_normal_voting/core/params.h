@@ -55,13 +55,16 @@ struct Params {
   double absoluteRadius = 0.0;  // ... unless this is > 0: then g_m = absoluteRadius
   // phi: smallest angle between two sheets' normals that is a crease. It drives four things:
   //  - Eq. 10's epsilon (EpsilonFromAngle), i.e. pass 1's classes (normal_votes.cpp);
-  //  - the ridge fit's kink test: a ridge's two fitted sheets are at least phi apart
-  //    (crease_thinning.cpp, ScoreRidges);
+  //  - the ridge fit's kink test: a ridge's two fitted sheets are at least phi apart, and where
+  //    only an angle below 60 deg makes v a crease of the votes they also fit v's heights within
+  //    the noise (crease_thinning.cpp, ScoreRidges; tuning.h);
   //  - the sharp-edge veto of thinning: an edge whose faces are more than phi apart (or five
   //    median edge angles, tuning.h) is a crease of the mesh itself (crease_thinning.cpp);
   //  - the quadric fit's sample weights: a neighbour whose normal is phi or more off v's gets no
-  //    weight (sheet_fit.cpp, SampleInFrame).
-  double creaseAngleDeg = 60.0;
+  //    weight, and never one within 50 deg (sheet_fit.cpp, SampleInFrame; tuning.h).
+  // 40 by default: under noise the votes alone find the 45 deg chamfers of CAD parts (the paper
+  // leaves phi to the user; docs/accuracy.md measures 40 against 60).
+  double creaseAngleDeg = 40.0;
   // On a clean mesh (a CAD export) every class comes from the mesh edges whose dihedral angle is at
   // least this (capped by the crease angle) and that stand out from the lines beside them
   // (sharp_edges.h), not from the votes; on a lightly noisy mesh the sharp edges only add creases

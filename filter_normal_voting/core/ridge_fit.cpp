@@ -104,6 +104,7 @@ RidgeFitResult FitRidge(const TangentFrame& F, const std::vector<Eigen::Vector3d
     across1 += e * e * (w >= 0 ? wp : wm);
   }
   out.F = (n - kRidgeBasis - 1) * std::max(0.0, across0 - across1) / std::max(across1, floorRss);
+  out.meanSquareAcross = across1 / (n - kRidgeBasis - 1);
   out.tangent = F.FromPlane(Eigen::Vector2d(c, s));
   out.ok = std::isfinite(out.F) && std::isfinite(out.alphaRad);
   return out;

@@ -38,6 +38,7 @@ struct RidgeFitResult {
   bool ok = false;
   double F = 0;                // F statistic of the kink
   double alphaRad = 0;         // angle between the two fitted sheets' normals
+  double meanSquareAcross = 0; // R_1 / (N - 4): what is left across the two sheets, per degree of freedom
   Eigen::Vector3d tangent = Eigen::Vector3d::Zero();  // the fitted ridge line's direction
 };
 

@@ -199,7 +199,7 @@ PassEnd FitSurfaceCurvature(const SurfaceGraph& g, const Params& p, const Pass1S
     const bool last = round == rounds - 1;
     if (!last) AssignOnHugePages(fitted, g.VertexCount());
     const CurvatureRound R{g, p, s, out, surface, previous, onBorder,
-                           std::cos(DegToRad(p.creaseAngleDeg)), tuning::kSlopeWeightEdges * g.meanEdge,
+                           std::cos(DegToRad(std::max(p.creaseAngleDeg, tuning::kFitSampleMaxAngleDeg))), tuning::kSlopeWeightEdges * g.meanEdge,
                            nearBorder * nearBorder, last};
     const std::string text = rounds == 1 ? std::string("Normal vector voting: curvature")
         : "Normal vector voting: curvature, fit " + std::to_string(round + 1) + " of " + std::to_string(rounds);

@@ -46,6 +46,10 @@ constexpr double kCreaseEdgeMinCosToTangent = 0.70710678118654752;
 // ... and its two faces lean apart across the line by at least half what two sheets at the
 // vertex's cusp angle do (faces of one sheet differ by noise only).
 constexpr double kCreaseEdgeMinLean = 0.5;
+// Two corners carry no tangent: the edge between them is a crease edge where its faces' normals
+// are the crease angle apart, and never below this: at the default crease angle (40) the folded
+// facets of the clean export block's hole split its 5 patches into 8.
+constexpr double kCornerPairEdgeMinAngleDeg = 60.0;
 // Patches of fewer faces than this (about a vertex's fan) are noise between crease edges:
 // merged into the neighbour they share most crease edges with (not on a clean mesh).
 constexpr int kMinPatchFaces = 8;
@@ -104,6 +108,19 @@ constexpr double kRidgeRadiusMax = 3.0;
 // The ridge fit's smallest residual that counts, times l_ave^2 per sample (clean meshes' exact
 // fits give ~0, and F must stay finite).
 constexpr double kRidgeResidualFloor = 1e-12;
+// A crease the votes find only below this angle (Eq. 10 at this angle would call the vertex
+// surface) must also be a kink of two planes within the noise: under noise the strip lines of a
+// cylinder cut into 10 strips (a hole, a boss) vote like 40 deg creases, but the heights around
+// them lie off any two planes; a chamfer's do not. 60: the crease angle the votes decided alone
+// at before the default fell to 40.
+constexpr double kRidgeConfirmAngleDeg = 60.0;
+// "Within the noise": the fit's mean square across its sheets (ridge_fit.h) at most this squared
+// times the noise estimate's sigma^2 plus the floor's. Chosen on the CAD parts (default crease
+// angle 40): at 10 % noise, default and fine meshes' +-1-edge F1 0.85 / 0.93 with 2 against 0.84 /
+// 0.90 with 3 and 0.82 / 0.89 without the test; no cell of the synthetic crease set worse.
+constexpr double kRidgeConfirmNoise = 2.0;
+// ... floor of that sigma, in l_ave (a clean mesh's sigma is 0).
+constexpr double kRidgeConfirmFloorEdges = 0.02;
 
 // An edge v->u lies "across" a line when |cos| of its angle with the line is below this (37 deg
 // from the line: keeps the diagonals of a grid), "along" it when |cos| is above it.
@@ -124,6 +141,13 @@ constexpr double kSharpAngleMaxDeg = 179.0;
 constexpr int kMedianEdgeAngleFaces = 100000;
 
 // --- The quadric fit (sheet_fit.h) -------------------------------------------------------------
+
+// A neighbour whose normal is off v's by the crease angle or by this, whichever is larger, is on
+// another sheet and gets no weight. At 20 % noise, with the default crease angle (40): sphere grid
+// curvature error 11.5 % of 1 / l_ave with no floor, 10.5 % with 50, 10.1 % with 60 (9.9 % at a 60
+// deg crease angle); but next to creases found at half their angle (the near-crease set) a floor
+// of 60 let the other sheet in: capped cylinder normal p90 3.4 -> 4.2 deg (3.8 with 50).
+constexpr double kFitSampleMaxAngleDeg = 50.0;
 
 // Weight of the slope rows against the height rows, in l_ave: 2 won the paper's grids at 5 and
 // 20 % noise against 1 and 4 (docs/accuracy.md, the fit's slope weight).

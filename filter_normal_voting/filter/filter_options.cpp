@@ -29,9 +29,9 @@ std::vector<ParamSpec> AlgorithmParameters() {
      0.0, 0.0, limits::kMaxAbsoluteRadius, {}, {}, true},
     {"crease_angle", ParamType::Float, "Crease angle (deg)",
      "Smallest angle between the normals of two surface sheets that still counts as a crease "
-     "(the paper's epsilon = 1/tan^2(angle/2) - 1; 60 deg gives epsilon = 2). Raise it to ignore "
-     "shallow edges, lower it to catch them. Between 1 and 89 degrees.",
-     60.0, limits::kMinAngleDeg, limits::kMaxAngleDeg, {}, {}, false},
+     "(the paper's epsilon = 1/tan^2(angle/2) - 1; 40 deg gives epsilon = 6.5, 60 deg gives 2). Raise "
+     "it to ignore shallow edges, lower it to catch them. Between 1 and 89 degrees.",
+     40.0, limits::kMinAngleDeg, limits::kMaxAngleDeg, {}, {}, false},
     {"corner_angle", ParamType::Float, "Corner angle (deg)",
      "The same threshold for the third direction: how strongly a third sheet must show before a "
      "vertex is a corner (the paper's eta). Between 1 and 89 degrees.",
@@ -47,7 +47,8 @@ std::vector<ParamSpec> AlgorithmParameters() {
     {"stop_at_creases", ParamType::Bool, "Stop curvature at creases",
      "When estimating curvature, do not let a neighbourhood grow across crease and corner vertices, "
      "so each side of an edge keeps its own curvature. Matters most for the Taubin and Euler estimators: "
-     "the quadric fit already gives no weight to neighbours whose normal differs by the crease angle.",
+     "the quadric fit already gives no weight to neighbours whose normal differs by the crease angle "
+     "(or 50 degrees, if larger).",
      1.0, 0, 1, {}, {}, false},
     {"thin_creases", ParamType::Bool, "Thin crease bands to their ridge",
      "Pass 1 marks every vertex within about the radius of a crease as crease or corner. Keep only the "

@@ -66,8 +66,11 @@ std::vector<OptionCase> Cases() {
     // The sample is clean: automatic k keeps 3 (AutomaticKFollowsTheNoise shows a noisy mesh).
     {"auto_k", {"--auto_k", "true"}, {}, [](O& o) { o.core.autoK = true; }, false},
     {"absolute_radius", {"--absolute_radius", "0.45"}, {}, [](O& o) { o.core.absoluteRadius = 0.45; }, true},
-    {"crease_angle", {"--crease_angle", "20"}, {}, [](O& o) { o.core.creaseAngleDeg = 20; }, true},
-    {"corner_angle", {"--corner_angle", "30"}, {}, [](O& o) { o.core.cornerAngleDeg = 30; }, true},
+    // The sample is clean: its sharp edges give the classes, and the crease angle acts on the
+    // quadric fit's samples only above 60 deg (tuning.h); the votes show both angles.
+    {"crease_angle", {"--crease_angle", "75"}, {}, [](O& o) { o.core.creaseAngleDeg = 75; }, true},
+    {"corner_angle", {"--sharp_edge_angle", "0", "--corner_angle", "85"}, {"--sharp_edge_angle", "0"},
+     [](O& o) { o.core.sharpEdgeAngleDeg = 0; o.core.cornerAngleDeg = 85; }, true},
     {"sharp_edge_angle", {"--sharp_edge_angle", "0"}, {}, [](O& o) { o.core.sharpEdgeAngleDeg = 0; }, true},
     // The quadric fit already leaves out neighbours across a crease; the paper's Taubin votes
     // show whether the march stops there.
@@ -77,7 +80,7 @@ std::vector<OptionCase> Cases() {
      [](O& o) { o.core.fit = nvv::CurvatureFit::PaperTaubin; }, true},
     {"curvature_fit_euler", {"--curvature_fit", "euler"}, {},
      [](O& o) { o.core.fit = nvv::CurvatureFit::EulerLeastSquares; }, true},
-    // At the default 60 deg the CAD part's band is one vertex wide already; at 30 deg it is wide.
+    // At 60 deg the CAD part's band is one vertex wide already; at 30 deg it is wide.
     // Thinning acts on the votes' band: the clean part's sharp edges, which need none, are off.
     {"thin_creases", {"--sharp_edge_angle", "0", "--crease_angle", "30", "--thin_creases", "false"},
      {"--sharp_edge_angle", "0", "--crease_angle", "30"},
