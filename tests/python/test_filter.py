@@ -174,8 +174,8 @@ def test_returned_dict_holds_the_summary():
     assert out["k1_min"] < out["k1_max"] and out["k2_min"] <= out["k1_max"]
     assert out["absolute_radius"] == pytest.approx(3.0 * out["mean_edge_length"], rel=1e-9)
     assert out["k_used"] == 3.0 and out["noise_estimate"] == pytest.approx(0.05, rel=0.15)  # the sample's 5 %
-    # The paper's thresholds from the default angles (60 deg): 1/tan^2(30 deg) - 1 = 2.
-    assert out["epsilon"] == pytest.approx(2.0) and out["eta"] == pytest.approx(2.0)
+    # Eq. 11 at the default crease angle 40 deg (1 / tan^2 20 deg - 1) and corner angle 60 deg
+    assert out["epsilon"] == pytest.approx(1 / math.tan(math.radians(20)) ** 2 - 1) and out["eta"] == pytest.approx(2.0)
     assert out["seconds"] > 0 and out["seconds"] >= out["seconds_pass1"]
     assert load(CAD).compute_normal_vector_voting(absolute_radius=3.5)["absolute_radius"] == pytest.approx(3.5)
     # The method PyMeshLab adds and apply_filter are one call.
