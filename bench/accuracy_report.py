@@ -1060,12 +1060,13 @@ def reflow(md, width=96):
         else:
             items = []
             for l in block:
-                if l.startswith("- ") or not items:
+                if re.match(r" *- ", l) or not items:  # an item, nested ones ("  - ") included
                     items.append(l)
                 else:
                     items[-1] += " " + l.strip()
             for it in items:
-                lead = "- " if it.startswith("- ") else ""
+                m = re.match(r" *- ", it)
+                lead = m.group(0) if m else ""
                 # no line break inside "k = 3", "5 %", "1 / 3 / 5", "k · l_ave"
                 body = re.sub(r" (?=[=%·≤−])|(?<=[=·≤−]) |(?<=\d) (?=/ \d)|(?<=\d /) (?=\d)", GLUE, it[len(lead):])
                 lines = textwrap.wrap(body, width - len(lead), break_long_words=False, break_on_hyphens=False)
@@ -1076,7 +1077,7 @@ def reflow(md, width=96):
                         lines[i - 1] += " " + head
                         lines[i] = rest
                 lines = [l.replace(GLUE, " ") for l in lines]
-                out.extend([lead + lines[0]] + ["  " * bool(lead) + l for l in lines[1:]])
+                out.extend([lead + lines[0]] + [" " * len(lead) + l for l in lines[1:]])
         block.clear()
 
     for line in md.split("\n"):
