@@ -136,9 +136,9 @@ inline std::string HelpText() {
   s += Wrap("Every error is reported as one line on standard error starting with \"nvv: \".", 2);
   s += "\nEXAMPLES\n"
        "  nvv fandisk.off fandisk_nvv.ply\n"
-       "      Defaults: k = 3 mean edge lengths, crease and corner angle 60 degrees,\n"
-       "      class colours, mean curvature as quality.\n\n"
-       "  nvv --neighbourhood_k 5 --crease_angle 40 scan.ply scan_nvv.ply\n"
+       "      Defaults: k = 3 mean edge lengths, crease angle 40 and corner angle 60\n"
+       "      degrees, class colours, mean curvature as quality.\n\n"
+       "  nvv --neighbourhood_k 5 --crease_angle 30 scan.ply scan_nvv.ply\n"
        "      A larger neighbourhood for a noisy scan; shallower edges become creases.\n\n"
        "  nvv --neighbourhood_k auto scan.ply scan_nvv.ply\n"
        "      k chosen from the noise the tool estimates: 3 on a clean mesh, up to 5\n"

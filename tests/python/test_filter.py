@@ -282,9 +282,9 @@ def test_results_equal_the_command_line_tools(cli, tmp_path):
 
 
 def test_results_equal_the_command_line_tools_with_other_options(cli, tmp_path):
-    ref = run_cli(cli, tmp_path, "--neighbourhood_k", "5", "--crease_angle", "40", "--curvature_fit", "taubin")
+    ref = run_cli(cli, tmp_path, "--neighbourhood_k", "5", "--crease_angle", "30", "--curvature_fit", "taubin")
     ms = load(CAD)
-    ms.compute_normal_vector_voting(neighbourhood_k=5, crease_angle=40, curvature_fit="Taubin matrix (paper)",
+    ms.compute_normal_vector_voting(neighbourhood_k=5, crease_angle=30, curvature_fit="Taubin matrix (paper)",
                                     save_results_ply=str(tmp_path / "results.ply"))
     got = read_ply_vertices(tmp_path / "results.ply")
     assert int(np.sum(ref["nvv_class"] != got["nvv_class"])) == 0
