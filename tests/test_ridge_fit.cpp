@@ -233,18 +233,7 @@ TEST(Pass1Classes, NoisyObtuseRoofKeepsItsRidgeAndNotItsFlanks) {
 
 namespace {
 
-// A ridge rounded by a circular fillet of radius `filletEdges` grid steps (0: sharp) between two
-// planes whose normals are alphaDeg apart, on the 33 x 33 grid of nvv_shapes::Roof.
-void RoundedRoof(TMesh& m, double alphaDeg, double filletEdges) {
-  const double half = 16, len = 32, a = nvv::DegToRad(alphaDeg / 2), slope = std::tan(a);
-  const double x0 = filletEdges * std::sin(a), c = -filletEdges / std::cos(a);  // tangent point; centre height
-  nvv_shapes::ParametricGrid(m, 33, 33, [=](double s, double t) {
-    const double x = half * (2 * s - 1), ax = std::abs(x);
-    const double z = ax >= x0 ? -slope * ax : c + std::sqrt(filletEdges * filletEdges - x * x);
-    return vcg::Point3d(x, len * (t - 0.5), z);
-  });
-}
-
+// Crease and corner vertices of r within halfWidth of the plane x = 0.
 int FeaturesWithin(const TMesh& m, const NvvRun& r, double halfWidth) {
   int n = 0;
   for (std::size_t i = 0; i < m.vert.size(); ++i)
@@ -264,7 +253,7 @@ TEST(Pass1Classes, ACoarseCylinderIsNoCreaseWhereItsHeightsLieOffTwoPlanes) {
   for (double noise : {0.05, 0.10}) {
     TMesh cylinder, sharp;
     nvv_shapes::Cylinder(cylinder, 1.0, 2 * M_PI / 10 * 20, 10, 21);
-    RoundedRoof(sharp, 45, 0.0);
+    nvv_shapes::Roof(sharp, 45.0);
     for (TMesh* m : {&cylinder, &sharp}) NoiseAlongNormals(*m, noise * nvv_shapes::MeanEdge(*m), 11);
     const nvv::Params p = WithK(3);
     ASSERT_EQ(40.0, p.creaseAngleDeg);

@@ -33,8 +33,9 @@ void ForEachInteriorEdge(const SurfaceGraph& g, Fn fn) {
 }
 
 // True when the edge (a, b) between faces f and o lies on a crease; cusp: its angle (radians).
+// cosCornerPair: the cosine of the angle the faces of an edge between two corners must reach.
 bool CreaseEdgeTest(const SurfaceGraph& g, const std::vector<VertexResult>& res, int a, int b, int f, int o,
-                    double cosCreaseAngle, double& cusp) {
+                    double cosCornerPair, double& cusp) {
   const VertexResult &ra = res[a], &rb = res[b];
   if (!IsFeature(ra) || !IsFeature(rb) || !(g.faceArea[f] > 0) || !(g.faceArea[o] > 0)) return false;
   const Eigen::Vector3d& Nf = g.faceNormal[f];
@@ -42,7 +43,7 @@ bool CreaseEdgeTest(const SurfaceGraph& g, const std::vector<VertexResult>& res,
   if (!IsCrease(ra) && !IsCrease(rb)) {  // two corners: no tangent, only the faces can say
     const double c = std::max(-1.0, std::min(1.0, Nf.dot(No)));
     cusp = std::acos(c);
-    return c < cosCreaseAngle;
+    return c < cosCornerPair;
   }
   // The two sheets as pass 1 saw them at the edge's crease end(s): tangent T, bisector n, cusp angle.
   Eigen::Vector3d T = Eigen::Vector3d::Zero(), n = Eigen::Vector3d::Zero();
@@ -291,11 +292,11 @@ void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, int minF
 CreaseNetwork FindCreaseNetwork(const SurfaceGraph& g, const std::vector<VertexResult>& res, double radius,
                                 double creaseAngleDeg, bool cleanMesh) {
   CreaseNetwork net;
-  const double cosCrease = std::cos(DegToRad(std::max(creaseAngleDeg, tuning::kCornerPairEdgeMinAngleDeg)));
+  const double cosCornerPair = std::cos(DegToRad(std::max(creaseAngleDeg, tuning::kCornerPairEdgeMinAngleDeg)));
   std::vector<std::pair<Edge, float>> found;
   ForEachInteriorEdge(g, [&](int a, int b, int f, int o) {
     double cusp = 0;
-    if (CreaseEdgeTest(g, res, a, b, f, o, cosCrease, cusp)) found.push_back({Key(a, b), float(cusp)});
+    if (CreaseEdgeTest(g, res, a, b, f, o, cosCornerPair, cusp)) found.push_back({Key(a, b), float(cusp)});
   });
   std::sort(found.begin(), found.end());
   for (const auto& e : found) net.edges.push_back(e.first), net.edgeCuspAngle.push_back(e.second);

@@ -161,8 +161,7 @@ struct RidgeScratch {
 // True when Eq. 10 with epsilon = eta = `epsilon` calls r a feature (pass 1's eigenvalues, in
 // their sign-aware order): would the votes make v a crease or corner at that angle.
 bool VotesFeatureAt(const VertexResult& r, double epsilon) {
-  const double Ss = r.lambda[0] - r.lambda[1], Sc = r.lambda[1] - r.lambda[2], Sn = r.lambda[2];
-  return !(Ss >= epsilon * Sc && Ss >= epsilon * epsilon * Sn);
+  return !SurfaceByEq10(r.lambda[0] - r.lambda[1], r.lambda[1] - r.lambda[2], r.lambda[2], epsilon, epsilon);
 }
 
 // The better of two ridge fits at v: in the frame of pass 1's normal, and of the ball's mean

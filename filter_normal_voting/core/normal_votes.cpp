@@ -72,9 +72,8 @@ void VoteNormal(const SurfaceGraph& g, GeodesicMarch& march, int v, const Pass1S
   for (int j = 0; j < 3; ++j) r.lambda[j] = float(std::max(0.0, l[j]));
 
   const double Ss = l[0] - l[1], Sc = l[1] - l[2], Sn = std::max(0.0, l[2]);
-  const double crease = s.epsilon * Sc, corner = s.epsilon * s.eta * Sn;
-  if (Ss >= crease && Ss >= corner) r.cls = VertexClass::Surface;
-  else if (crease >= corner) r.cls = VertexClass::Crease;
+  if (SurfaceByEq10(Ss, Sc, Sn, s.epsilon, s.eta)) r.cls = VertexClass::Surface;
+  else if (s.epsilon * Sc >= s.epsilon * s.eta * Sn) r.cls = VertexClass::Crease;
   else r.cls = VertexClass::Corner;
 
   // Orient E1 with the area-weighted one-ring normal (falls back to the mean vote).

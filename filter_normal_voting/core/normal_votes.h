@@ -23,6 +23,12 @@
 
 namespace nvv {
 
+// Eq. 10's surface case: S_s beats both eps S_c and eps eta S_n. Pass 1 classifies with it, and
+// the ridge confirmation (crease_thinning.cpp) asks it at another angle.
+inline bool SurfaceByEq10(double Ss, double Sc, double Sn, double epsilon, double eta) {
+  return Ss >= epsilon * Sc && Ss >= epsilon * eta * Sn;
+}
+
 struct Pass1Settings {
   double radius = 0;     // g_m
   double sigma = 0;      // Eq. 8

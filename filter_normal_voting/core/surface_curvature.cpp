@@ -195,11 +195,11 @@ PassEnd FitSurfaceCurvature(const SurfaceGraph& g, const Params& p, const Pass1S
     surface[v] = out[v].cls == VertexClass::Surface;
     for (int j = 0; j < 3; ++j) previous[v][j] = out[v].normal[j];
   }
+  const double cosSheet = std::cos(DegToRad(std::max(p.creaseAngleDeg, tuning::kFitSampleAngleFloorDeg)));
   for (int round = 0; round < rounds; ++round) {
     const bool last = round == rounds - 1;
     if (!last) AssignOnHugePages(fitted, g.VertexCount());
-    const CurvatureRound R{g, p, s, out, surface, previous, onBorder,
-                           std::cos(DegToRad(std::max(p.creaseAngleDeg, tuning::kFitSampleMaxAngleDeg))), tuning::kSlopeWeightEdges * g.meanEdge,
+    const CurvatureRound R{g, p, s, out, surface, previous, onBorder, cosSheet, tuning::kSlopeWeightEdges * g.meanEdge,
                            nearBorder * nearBorder, last};
     const std::string text = rounds == 1 ? std::string("Normal vector voting: curvature")
         : "Normal vector voting: curvature, fit " + std::to_string(round + 1) + " of " + std::to_string(rounds);

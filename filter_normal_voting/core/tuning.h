@@ -149,7 +149,7 @@ constexpr int kMedianEdgeAngleFaces = 100000;
 // curvature error 11.5 % of 1 / l_ave with no floor, 10.5 % with 50, 10.1 % with 60 (9.9 % at a 60
 // deg crease angle); but next to creases found at half their angle (the near-crease set) a floor
 // of 60 let the other sheet in: capped cylinder normal p90 3.4 -> 4.2 deg (3.8 with 50).
-constexpr double kFitSampleMaxAngleDeg = 50.0;
+constexpr double kFitSampleAngleFloorDeg = 50.0;
 
 // Weight of the slope rows against the height rows, in l_ave: 2 won the paper's grids at 5 and
 // 20 % noise against 1 and 4 (docs/accuracy.md, the fit's slope weight).
