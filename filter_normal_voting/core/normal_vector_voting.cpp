@@ -163,9 +163,13 @@ Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std::vector
   PassProgress voting(cb, g.VertexCount(), 0, share, "Normal vector voting: normals and classes");
   PassEnd end = VoteNormals(g, s, threads, voting, out);
   if (end != PassEnd::Done) return Unfinished(end);
-  PassProgress ridges(cb, g.VertexCount(), share, share, "Normal vector voting: crease ridges");
-  end = ThinCreases(g, p, s, threads, ridges, out, sum.thinned);
-  if (end != PassEnd::Done) return Unfinished(end);
+  // On a clean mesh the sharp edges decide every class (sharp_edges.h): the ridge fits that would
+  // thin the votes' band are skipped, since every class they set would be overwritten.
+  if (SharpEdgeRoleFor(p, noise.noiseAngle) != SharpEdgeRole::DecideAll) {
+    PassProgress ridges(cb, g.VertexCount(), share, share, "Normal vector voting: crease ridges");
+    end = ThinCreases(g, p, s, threads, ridges, out, sum.thinned);
+    if (end != PassEnd::Done) return Unfinished(end);
+  }
   const SharpEdgeRole sharp = ClassifyBySharpEdges(g, p, noise.noiseAngle, threads, out, sum.sharpEdgeChanged);
   sum.sharpEdges = sharp == SharpEdgeRole::DecideAll;
   sum.sharpEdgesAdded = sharp == SharpEdgeRole::AddFeatures;

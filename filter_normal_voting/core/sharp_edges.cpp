@@ -165,13 +165,17 @@ bool Apply(const SurfaceGraph& g, int v, const SharpVerdict& s, VertexResult& r)
 
 }  // namespace
 
+SharpEdgeRole SharpEdgeRoleFor(const Params& p, double noise) {
+  if (!(p.sharpEdgeAngleDeg > 0)) return SharpEdgeRole::None;
+  if (!(noise < DegToRad(tuning::kLightNoiseDeg))) return SharpEdgeRole::None;  // noisy: the votes decide everywhere
+  return noise < DegToRad(tuning::kCleanMeshNoiseDeg) ? SharpEdgeRole::DecideAll : SharpEdgeRole::AddFeatures;
+}
+
 SharpEdgeRole ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, double noise, int threads,
                                    std::vector<VertexResult>& res, std::size_t& changed) {
   changed = 0;
-  if (!(p.sharpEdgeAngleDeg > 0)) return SharpEdgeRole::None;
-  if (!(noise < DegToRad(tuning::kLightNoiseDeg))) return SharpEdgeRole::None;  // noisy: the votes decide everywhere
-  const SharpEdgeRole role = noise < DegToRad(tuning::kCleanMeshNoiseDeg) ? SharpEdgeRole::DecideAll
-                                                                           : SharpEdgeRole::AddFeatures;
+  const SharpEdgeRole role = SharpEdgeRoleFor(p, noise);
+  if (role == SharpEdgeRole::None) return role;
   Thresholds t;
   t.sharp = DegToRad(std::min(p.sharpEdgeAngleDeg, p.creaseAngleDeg));
   t.always = DegToRad(std::max(tuning::kSharpEdgeAlwaysDeg, p.sharpEdgeAngleDeg));

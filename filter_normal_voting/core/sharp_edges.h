@@ -50,6 +50,10 @@ enum class SharpEdgeRole {
   AddFeatures,  // a lightly noisy mesh: vertices on sharp edges become creases and corners, the rest keep the votes' class
 };
 
+// What the sharp edges will do on a mesh of this noise angle (radians, MeshNoiseAngle), known before
+// pass 1: where they decide every class, thinning the votes' band would be overwritten and is skipped.
+SharpEdgeRole SharpEdgeRoleFor(const Params& p, double noiseAngle);
+
 // Reclassifies vertices from the mesh's sharp edges as its noise angle (MeshNoiseAngle) allows (see
 // above); `changed`: how many vertices changed class.
 SharpEdgeRole ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, double noiseAngle, int threads,
