@@ -165,12 +165,13 @@ Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std::vector
   if (end != PassEnd::Done) return Unfinished(end);
   // On a clean mesh the sharp edges decide every class (sharp_edges.h): the ridge fits that would
   // thin the votes' band are skipped, since every class they set would be overwritten.
-  if (SharpEdgeRoleFor(p, noise.noiseAngle) != SharpEdgeRole::DecideAll) {
+  const SharpEdgeRole sharp = SharpEdgeRoleFor(p, noise.noiseAngle);
+  if (sharp != SharpEdgeRole::DecideAll) {
     PassProgress ridges(cb, g.VertexCount(), share, share, "Normal vector voting: crease ridges");
     end = ThinCreases(g, p, s, threads, ridges, out, sum.thinned);
     if (end != PassEnd::Done) return Unfinished(end);
   }
-  const SharpEdgeRole sharp = ClassifyBySharpEdges(g, p, noise.noiseAngle, threads, out, sum.sharpEdgeChanged);
+  ClassifyBySharpEdges(g, p, sharp, noise.noiseAngle, threads, out, sum.sharpEdgeChanged);
   sum.sharpEdges = sharp == SharpEdgeRole::DecideAll;
   sum.sharpEdgesAdded = sharp == SharpEdgeRole::AddFeatures;
   sum.secondsPass1 = SecondsSince(t0);

@@ -171,11 +171,10 @@ SharpEdgeRole SharpEdgeRoleFor(const Params& p, double noise) {
   return noise < DegToRad(tuning::kCleanMeshNoiseDeg) ? SharpEdgeRole::DecideAll : SharpEdgeRole::AddFeatures;
 }
 
-SharpEdgeRole ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, double noise, int threads,
-                                   std::vector<VertexResult>& res, std::size_t& changed) {
+void ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, SharpEdgeRole role, double noise, int threads,
+                          std::vector<VertexResult>& res, std::size_t& changed) {
   changed = 0;
-  const SharpEdgeRole role = SharpEdgeRoleFor(p, noise);
-  if (role == SharpEdgeRole::None) return role;
+  if (role == SharpEdgeRole::None) return;
   Thresholds t;
   t.sharp = DegToRad(std::min(p.sharpEdgeAngleDeg, p.creaseAngleDeg));
   t.always = DegToRad(std::max(tuning::kSharpEdgeAlwaysDeg, p.sharpEdgeAngleDeg));
@@ -192,7 +191,6 @@ SharpEdgeRole ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, doubl
     if (role == SharpEdgeRole::AddFeatures && VertexClass(verdict[v].cls) == VertexClass::Surface) continue;
     changed += Apply(g, v, verdict[v], res[v]);
   }
-  return role;
 }
 
 double MeshNoiseAngle(const SurfaceGraph& g) {

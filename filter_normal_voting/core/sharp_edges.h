@@ -54,10 +54,10 @@ enum class SharpEdgeRole {
 // pass 1: where they decide every class, thinning the votes' band would be overwritten and is skipped.
 SharpEdgeRole SharpEdgeRoleFor(const Params& p, double noiseAngle);
 
-// Reclassifies vertices from the mesh's sharp edges as its noise angle (MeshNoiseAngle) allows (see
-// above); `changed`: how many vertices changed class.
-SharpEdgeRole ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, double noiseAngle, int threads,
-                                   std::vector<VertexResult>& res, std::size_t& changed);
+// Reclassifies vertices from the mesh's sharp edges in their role (SharpEdgeRoleFor of the same
+// noise angle; nothing where None); `changed`: how many vertices changed class.
+void ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, SharpEdgeRole role, double noiseAngle, int threads,
+                          std::vector<VertexResult>& res, std::size_t& changed);
 
 }  // namespace nvv
 

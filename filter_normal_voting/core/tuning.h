@@ -114,8 +114,8 @@ constexpr double kRidgeResidualFloor = 1e-12;
 // them lie off any two planes; a chamfer's do not. 60: the crease angle the votes decided alone
 // at before the default fell to 40.
 constexpr double kRidgeConfirmAngleDeg = 60.0;
-// "Within the noise": the fit's mean square across its sheets (ridge_fit.h) at most this squared
-// times the noise estimate's sigma^2 plus the floor's. Chosen on the CAD parts (default crease
+// "Within the noise": the fit's mean square across its sheets (ridge_fit.h) at most the square of
+// this times the noise estimate's sigma (or the floor below, if larger). Chosen on the CAD parts (default crease
 // angle 40, fit floor 60 deg): at 10 % noise, default and fine meshes' +-1-edge F1 0.85 / 0.93 with
 // 2 against 0.84 / 0.90 with 3 and 0.82 / 0.89 without the test (at 5 %: 0.94 / 0.99 against 0.88 /
 // 0.93 without); checked on the synthetic crease set (no cell worse) and on noisy cylinders of 10-24
