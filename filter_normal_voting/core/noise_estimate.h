@@ -9,9 +9,10 @@
 // standard deviation by the quantile's calibration on noisy planes (kNoiseQuantileScale), and
 // given in units of the mean edge length l_ave, as the benchmarks' noise is. On a coarse CAD
 // tessellation every two-ring spans a crease or a curved face cut into strips and this reads far
-// too high; there the lowest tenth of the dihedral angles (sharp_edges.h's noise angle, exactly 0
-// on a CAD export) over its value per unit noise on noisy planes is the lower, and the estimate
-// is the lower of the two (each reads high where it fails, neither low).
+// too high; there the lowest tenth of the dihedral angles scaled to faces of edge l_ave
+// (sharp_edges.h's noise angle: exactly 0 on a CAD export, and its slivers, which the same noise
+// tilts most, read as that noise) over its value per unit noise on a noisy plane is the lower,
+// and the estimate is the lower of the two (each reads high where it fails, neither low).
 //
 // Automatic k (Params::autoK): k = 3 up to kAutoKLowNoise, rising linearly to kAutoKMax at
 // kAutoKHighNoise and staying there (docs/accuracy.md, "Which k", measures it against k = 3).

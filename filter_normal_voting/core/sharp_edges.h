@@ -9,12 +9,14 @@
 // mesh, the sharp edges add the creases the votes miss (those below the crease angle, rows closer
 // than the ball) and the votes keep the rest.
 //
-//  - The stage decides every class on a clean mesh: the lowest tenth of its dihedral angles (its
-//    noise angle) below kCleanMeshNoiseDeg. Every CAD export measured has exactly 0 there (its
-//    planes and strips hold flat edges), 1 % noise about 0.2 deg, 5 % 0.85 deg. Below
-//    kLightNoiseDeg (about 8 % noise on a uniform mesh) it only adds: a vertex on sharp edges
-//    becomes a crease or corner, any other keeps the votes' class. On noisier meshes the votes and
-//    the ridge fit decide alone, to the bit.
+//  - The stage decides every class on a clean mesh: its noise angle below kCleanMeshNoiseDeg. The
+//    noise angle is the lowest tenth of the dihedral angles, each scaled to what the same noise does
+//    between faces of edge l_ave (noise sigma tilts faces of heights hc, hd over their edge apart by
+//    about sigma (1/hc + 1/hd): a CAD export's slivers tilt most and must not read as a noisier mesh).
+//    Every CAD export measured has exactly 0 there (its planes and strips hold flat edges), 1 % noise
+//    about 0.2 deg, 5 % 0.8 deg. Below kLightNoiseDeg (about 9 % noise on a regular grid) it only
+//    adds: a vertex on sharp edges becomes a crease or corner, any other keeps the votes' class. On
+//    noisier meshes the votes and the ridge fit decide alone, to the bit.
 //  - An edge (v, x) between faces (v, x, c) and (x, v, d) is sharp where its dihedral angle theta
 //    is at least the sharp-edge angle (or the crease angle, if lower), stands well above what the
 //    mesh's noise does to faces of those heights over the edge (slivers tilt most), and either is
@@ -39,8 +41,9 @@
 namespace nvv {
 
 // The mesh's noise angle (radians): the lowest tenth of the dihedral angles over the edges of at
-// most kMedianEdgeAngleFaces evenly spread faces. Exactly 0 on a CAD export, whose planes and
-// strips hold flat edges; 0.2 deg under 1 % noise, 0.85 deg under 5 %.
+// most kMedianEdgeAngleFaces evenly spread faces, each scaled by its faces' heights to faces of edge
+// l_ave. Exactly 0 on a CAD export, whose planes and strips hold flat edges; 0.2 deg under 1 % noise,
+// 0.8 deg under 5 %, on long slivers as on a uniform mesh.
 double MeshNoiseAngle(const SurfaceGraph& g);
 
 // What a mesh's sharp edges did to the votes' classes.
