@@ -9,10 +9,12 @@
 // standard deviation by the quantile's calibration on noisy planes (kNoiseQuantileScale), and
 // given in units of the mean edge length l_ave, as the benchmarks' noise is. On a coarse CAD
 // tessellation every two-ring spans a crease or a curved face cut into strips and this reads far
-// too high; there the lowest tenth of the dihedral angles scaled to faces of edge l_ave
-// (sharp_edges.h's noise angle: exactly 0 on a CAD export, and its slivers, which the same noise
-// tilts most, read as that noise) over its value per unit noise on a noisy plane is the lower,
-// and the estimate is the lower of the two (each reads high where it fails, neither low).
+// too high; there the lowest tenth of the dihedral angles (sharp_edges.h's unscaled noise angle,
+// exactly 0 on a CAD export) over its value per unit noise on noisy planes is the lower, and the
+// estimate is the lower of the two (each reads high where it fails, neither low). The noise angle
+// scaled by the faces' heights, which the sharp edges read, comes nearer the noise on export meshes
+// but read 14-18 % high on the CAD parts' Delaunay meshes at 5 % and 25 % low on the ribs at 20 %
+// (recalibrated on the regular plane): not used here.
 //
 // Automatic k (Params::autoK): k = 3 up to kAutoKLowNoise, rising linearly to kAutoKMax at
 // kAutoKHighNoise and staying there (docs/accuracy.md, "Which k", measures it against k = 3).
@@ -26,8 +28,8 @@ namespace nvv {
 struct NoiseEstimate {
   double sigmaOverEdge = 0;  // standard deviation of the noise along the normals / l_ave: the lower of
   double fromTwoRings = 0;   // the two-rings' residuals (curvature absorbed; too high where features fill every two-ring)
-  double fromDihedrals = 0;  // and the mesh's noise angle (sharp_edges.h; too high on curved meshes, 0 on CAD exports)
-  double noiseAngle = 0;     // that noise angle itself (radians), which the sharp edges also read
+  double fromDihedrals = 0;  // and the mesh's unscaled noise angle (sharp_edges.h; too high on curved meshes, 0 on CAD exports)
+  double noiseAngle = 0;     // the noise angle scaled by the faces' heights (radians), which the sharp edges read
   int samples = 0;           // vertices whose two-ring was fitted
 };
 

@@ -193,17 +193,18 @@ void ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, SharpEdgeRole 
   }
 }
 
-double MeshNoiseAngle(const SurfaceGraph& g) {
+double MeshNoiseAngle(const SurfaceGraph& g, NoiseAngleScale scale) {
   std::vector<double> angles;
   // Noise sigma tilts two faces of heights hc, hd over their edge apart by about sigma (1/hc + 1/hd):
-  // each edge's angle is scaled to what it would be between equilateral faces of edge l_ave (heights
+  // scaled, each edge's angle is what it would be between equilateral faces of edge l_ave (heights
   // 0.87 l_ave), so that slivers, tilted most by the same noise, do not read as a noisier mesh.
   const double equilateral = 2 / (0.87 * g.meanEdge);
   g.ForEachSampledEdgePair([&](int f, int o, int a, int b) {
+    const double angle = EdgeAngle(g, f, o, a, b);
+    if (scale == NoiseAngleScale::Unscaled) return angles.push_back(angle);
     const double hc = HeightOver(g, a, b, ThirdVertex(g.face[f], a, b));
     const double hd = HeightOver(g, a, b, ThirdVertex(g.face[o], a, b));
-    if (!(hc > 0 && hd > 0)) return;
-    angles.push_back(EdgeAngle(g, f, o, a, b) * equilateral / (1 / hc + 1 / hd));
+    if (hc > 0 && hd > 0) angles.push_back(angle * equilateral / (1 / hc + 1 / hd));
   });
   if (angles.empty()) return 0;
   std::nth_element(angles.begin(), angles.begin() + angles.size() / 10, angles.end());

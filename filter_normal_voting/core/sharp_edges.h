@@ -43,8 +43,10 @@ namespace nvv {
 // The mesh's noise angle (radians): the lowest tenth of the dihedral angles over the edges of at
 // most kMedianEdgeAngleFaces evenly spread faces, each scaled by its faces' heights to faces of edge
 // l_ave. Exactly 0 on a CAD export, whose planes and strips hold flat edges; 0.2 deg under 1 % noise,
-// 0.8 deg under 5 %, on long slivers as on a uniform mesh.
-double MeshNoiseAngle(const SurfaceGraph& g);
+// 0.8 deg under 5 %, on long slivers as on a uniform mesh. Unscaled: the raw angles' lowest tenth,
+// which the noise estimate reads (noise_estimate.h).
+enum class NoiseAngleScale { ToEquilateralFaces, Unscaled };
+double MeshNoiseAngle(const SurfaceGraph& g, NoiseAngleScale scale = NoiseAngleScale::ToEquilateralFaces);
 
 // What a mesh's sharp edges did to the votes' classes.
 enum class SharpEdgeRole {

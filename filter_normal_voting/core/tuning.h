@@ -210,9 +210,8 @@ constexpr double kNoiseFitPivotRatio = 1e-8;
 constexpr double kNoiseQuantile = 0.25;
 // Turns that quantile into the noise's standard deviation: measured on noisy planes (tests/test_noise_estimate.cpp).
 constexpr double kNoiseQuantileScale = 1.2;
-// The mesh's noise angle (radians) per unit of noise sigma / l_ave: measured on the regular noisy plane
-// (tests/test_noise_estimate.cpp; the irregular one reads 14 % above it, long slivers within 15 %).
-constexpr double kNoiseAnglePerSigma = 0.282;
+// The unscaled noise angle (radians) per unit of noise sigma / l_ave: measured on noisy planes (tests/test_noise_estimate.cpp).
+constexpr double kNoiseAnglePerSigma = 0.31;
 // Automatic k: kAutoKMin up to kAutoKLowNoise (sigma / l_ave), kAutoKMax from kAutoKHighNoise, linear between.
 constexpr double kAutoKMin = 3.0;
 constexpr double kAutoKMax = 5.0;
