@@ -79,8 +79,9 @@ NoiseEstimate EstimateNoise(const SurfaceGraph& g, int threads) {
   }
   sigma.erase(std::remove_if(sigma.begin(), sigma.end(), [](double x) { return !(x >= 0); }), sigma.end());
   est.samples = int(sigma.size());
-  est.noiseAngle = MeshNoiseAngle(g);
-  est.fromDihedrals = MeshNoiseAngle(g, NoiseAngleScale::Unscaled) / tuning::kNoiseAnglePerSigma;
+  const MeshNoiseAngles angles = MeasureNoiseAngles(g);
+  est.noiseAngle = angles.scaled;
+  est.fromDihedrals = angles.unscaled / tuning::kNoiseAnglePerSigma;
   if (sigma.empty()) {
     est.sigmaOverEdge = est.fromDihedrals;
     return est;

@@ -193,22 +193,28 @@ void ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, SharpEdgeRole 
   }
 }
 
-double MeshNoiseAngle(const SurfaceGraph& g, NoiseAngleScale scale) {
-  std::vector<double> angles;
+MeshNoiseAngles MeasureNoiseAngles(const SurfaceGraph& g) {
+  std::vector<double> scaled, unscaled;
   // Noise sigma tilts two faces of heights hc, hd over their edge apart by about sigma (1/hc + 1/hd):
   // scaled, each edge's angle is what it would be between equilateral faces of edge l_ave (heights
   // 0.87 l_ave), so that slivers, tilted most by the same noise, do not read as a noisier mesh.
   const double equilateral = 2 / (0.87 * g.meanEdge);
   g.ForEachSampledEdgePair([&](int f, int o, int a, int b) {
     const double angle = EdgeAngle(g, f, o, a, b);
-    if (scale == NoiseAngleScale::Unscaled) return angles.push_back(angle);
+    unscaled.push_back(angle);
     const double hc = HeightOver(g, a, b, ThirdVertex(g.face[f], a, b));
     const double hd = HeightOver(g, a, b, ThirdVertex(g.face[o], a, b));
-    if (hc > 0 && hd > 0) angles.push_back(angle * equilateral / (1 / hc + 1 / hd));
+    if (hc > 0 && hd > 0) scaled.push_back(angle * equilateral / (1 / hc + 1 / hd));
   });
-  if (angles.empty()) return 0;
-  std::nth_element(angles.begin(), angles.begin() + angles.size() / 10, angles.end());
-  return angles[angles.size() / 10];
+  auto lowestTenth = [](std::vector<double>& angles) {
+    if (angles.empty()) return 0.0;
+    std::nth_element(angles.begin(), angles.begin() + angles.size() / 10, angles.end());
+    return angles[angles.size() / 10];
+  };
+  MeshNoiseAngles out;
+  out.scaled = lowestTenth(scaled);
+  out.unscaled = lowestTenth(unscaled);
+  return out;
 }
 
 }  // namespace nvv

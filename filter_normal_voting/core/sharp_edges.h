@@ -44,9 +44,12 @@ namespace nvv {
 // most kMedianEdgeAngleFaces evenly spread faces, each scaled by its faces' heights to faces of edge
 // l_ave. Exactly 0 on a CAD export, whose planes and strips hold flat edges; 0.2 deg under 1 % noise,
 // 0.8 deg under 5 %, on long slivers as on a uniform mesh. Unscaled: the raw angles' lowest tenth,
-// which the noise estimate reads (noise_estimate.h).
-enum class NoiseAngleScale { ToEquilateralFaces, Unscaled };
-double MeshNoiseAngle(const SurfaceGraph& g, NoiseAngleScale scale = NoiseAngleScale::ToEquilateralFaces);
+// which the noise estimate reads (noise_estimate.h). Both from one pass over the sampled edges.
+struct MeshNoiseAngles {
+  double scaled = 0;
+  double unscaled = 0;
+};
+MeshNoiseAngles MeasureNoiseAngles(const SurfaceGraph& g);
 
 // What a mesh's sharp edges did to the votes' classes.
 enum class SharpEdgeRole {
@@ -55,8 +58,9 @@ enum class SharpEdgeRole {
   AddFeatures,  // a lightly noisy mesh: vertices on sharp edges become creases and corners, the rest keep the votes' class
 };
 
-// What the sharp edges will do on a mesh of this noise angle (radians, MeshNoiseAngle), known before
-// pass 1: where they decide every class, thinning the votes' band would be overwritten and is skipped.
+// What the sharp edges will do on a mesh of this noise angle (radians, MeshNoiseAngles::scaled),
+// known before pass 1: where they decide every class, thinning the votes' band would be overwritten
+// and is skipped.
 SharpEdgeRole SharpEdgeRoleFor(const Params& p, double noiseAngle);
 
 // Reclassifies vertices from the mesh's sharp edges in their role (SharpEdgeRoleFor of the same
