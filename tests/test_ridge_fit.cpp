@@ -265,3 +265,55 @@ TEST(Pass1Classes, ACoarseCylinderIsNoCreaseWhereItsHeightsLieOffTwoPlanes) {
     EXPECT_GE(ridge, 25);
   }
 }
+
+namespace {
+
+// A 1.5 wide rib, 3 high, its top rounded into a half cylinder of radius 0.75, on a plate, extruded
+// 8 along y in rows 0.2 apart: the half cylinder cut into 16 strips 0.15 wide, the plate into strips
+// 3 wide and the walls 1 wide, as a CAD mesher cuts a fillet finer than the planes around it (ring
+// edges about a fifth of l_ave there). x runs across the rib.
+void RoundedRib(TMesh& m) {
+  std::vector<vcg::Point2d> xz;  // the profile, left to right
+  for (int i = 0; i < 10; ++i) xz.emplace_back(-30.75 + 3 * i, 0);
+  for (int i = 0; i < 3; ++i) xz.emplace_back(-0.75, i);
+  for (int i = 0; i <= 16; ++i) {
+    const double a = M_PI * (1 - i / 16.0);
+    xz.emplace_back(0.75 * std::cos(a), 3 + 0.75 * std::sin(a));
+  }
+  for (int i = 2; i >= 0; --i) xz.emplace_back(0.75, i);
+  for (int i = 1; i <= 10; ++i) xz.emplace_back(0.75 + 3 * i, 0);
+  const int nu = int(xz.size()), cu = nu - 1;
+  nvv_shapes::ParametricGrid(m, nu, 41, [&](double s, double t) {
+    const vcg::Point2d& p = xz[std::size_t(std::lround(s * cu))];
+    return vcg::Point3d(p[0], 8 * t, p[1]);
+  });
+}
+
+}  // namespace
+
+// The votes of a ball wider than the rib take its rounded top for a 90 deg crease: where the mesh is
+// refined (kRefinedEdgeRatio) such a crease must also be a kink of two planes within the noise, which
+// the half cylinder is not; the rib's feet, true 90 deg creases between planes, stay.
+TEST(Pass1Classes, ARefinedFilletNarrowerThanTheBallIsNoCrease) {
+  TMesh rib;
+  RoundedRib(rib);
+  const double lAve = nvv_shapes::MeanEdge(rib);
+  std::vector<vcg::Point3d> clean;
+  for (const auto& v : rib.vert) clean.push_back(v.cP());
+  NoiseAlongNormals(rib, 0.05 * lAve, 5);
+  const NvvRun r = RunNvv(rib, WithK(3));
+  ASSERT_TRUE(r.st.ok);
+  int onTop = 0, top = 0, onFeet = 0, feet = 0;
+  for (std::size_t i = 0; i < rib.vert.size(); ++i) {
+    const vcg::Point3d& p = clean[i];
+    if (p[1] < 1.5 || p[1] > 6.5) continue;  // away from the open ends
+    const bool feature = r.res[i].cls == VertexClass::Crease || r.res[i].cls == VertexClass::Corner;
+    if (p[2] > 3.01) top += 1, onTop += feature;
+    if (std::abs(p[2]) < 0.01 && std::abs(std::abs(p[0]) - 0.75) < 0.01) feet += 1, onFeet += feature;
+  }
+  std::printf("[rounded rib, l_ave %.2f, 5 %% noise] features on the half cylinder %d of %d, on the feet %d of %d\n",
+              lAve, onTop, top, onFeet, feet);
+  ASSERT_GT(top, 300);
+  EXPECT_LE(onTop, top / 50);
+  EXPECT_GE(onFeet, int(0.9 * feet));
+}

@@ -17,7 +17,7 @@ The parts (millimetres):
   draft_boss   a plate with a round boss and a square boss, both with 8 deg draft, a 2 mm
                fillet where the round boss meets the plate (tangent, not a crease);
   ribs         a plate with three 1.5 mm thin ribs 10 mm high (pairs of 90 deg creases 1.5 mm
-               apart, concave creases at their feet), a 1 mm fillet on one rib's top;
+               apart, concave creases at their feet), 0.7 mm fillets on one rib's top edges;
   bracket      an L-bracket: 6 mm inner fillet (tangent), two holes with 45 deg countersinks,
                a 30 deg chamfer on the flange's outer edge.
 Mesh sizes:

@@ -164,6 +164,13 @@ bool VotesFeatureAt(const VertexResult& r, double epsilon) {
   return !SurfaceByEq10(r.lambda[0] - r.lambda[1], r.lambda[1] - r.lambda[2], r.lambda[2], epsilon, epsilon);
 }
 
+// True when the mesh is cut much finer at v than on average: a mesher refined the surface there to
+// follow a curved profile (a fillet narrower than the neighbourhood, a hole's wall), which a crease
+// between two planes does not need.
+bool MeshRefinedAt(const SurfaceGraph& g, int v) {
+  return g.MeanRingEdge(v) < g.meanEdge / tuning::kRefinedEdgeRatio;
+}
+
 // The better of two ridge fits at v: in the frame of pass 1's normal, and of the ball's mean
 // normal (the bisector of a crease's two sheets; in the frame of one sheet's normal, which pass
 // 1's E1 often is, the other sheet of a 90 deg crease is vertical).
@@ -214,7 +221,10 @@ PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res,
     sc.flood.Run(v, ridgeRadius, s.maxNeighbourhood);
     const RidgeFitResult fit = StrongerRidgeFit(g, res[v], v, floorRss, sc);
     if (!fit.ok || fit.alphaRad < phi || fit.F < tuning::kRidgeMinF) return;
-    if (!VotesFeatureAt(res[v], confirmEpsilon) && fit.meanSquareAcross > confirmMeanSquare) return;
+    // A crease the votes find only below the confirmation angle, or where the mesh is refined, must
+    // also be a kink of two planes within the noise.
+    if (fit.meanSquareAcross > confirmMeanSquare && (!VotesFeatureAt(res[v], confirmEpsilon) || MeshRefinedAt(g, v)))
+      return;
     ridge[v].F = float(fit.F);
     ridge[v].alphaRad = float(fit.alphaRad);
     for (int j = 0; j < 3; ++j) ridge[v].tangent[j] = float(fit.tangent[j]);

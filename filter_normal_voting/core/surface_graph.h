@@ -70,6 +70,17 @@ struct SurfaceGraph {
     return s;
   }
 
+  // Mean length of the edges at v over its faces (an edge two of them hold counted twice): how
+  // finely the mesh is cut there.
+  double MeanRingEdge(int v) const {
+    double sum = 0;
+    int count = 0;
+    for (int i = FaceBegin(v); i < FaceEnd(v); ++i)
+      for (int y : face[vfList[i]])
+        if (y != v) sum += (pos[y] - pos[v]).norm(), ++count;
+    return count > 0 ? sum / count : 0;
+  }
+
   // Calls fn(o) for every face o != f that holds the edge (a, b) of face f: one on a manifold
   // edge, none on a boundary, several on a non-manifold one, in increasing face order. On an
   // edge of one or two faces the faces of the endpoint with fewer faces are scanned: from a
