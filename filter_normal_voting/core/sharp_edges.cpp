@@ -55,6 +55,10 @@ double ParallelTurn(const SurfaceGraph& g, int c, const Eigen::Vector3d& e) {
   return turn;
 }
 
+// An equilateral face's height per unit edge (sqrt(3) / 2, rounded as the noise angle's calibration was):
+// the faces of edge l_ave the noise angle and the sharp edges' noise test are scaled to.
+constexpr double kEquilateralHeight = 0.87;
+
 int ThirdVertex(const std::array<int, 3>& t, int a, int b) { return t[0] + t[1] + t[2] - a - b; }
 
 // How much the surface turns at the other edges of face h = (a, b, c) (its edges through c), below
@@ -178,8 +182,8 @@ void ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, SharpEdgeRole 
   Thresholds t;
   t.sharp = DegToRad(std::min(p.sharpEdgeAngleDeg, p.creaseAngleDeg));
   t.always = DegToRad(std::max(tuning::kSharpEdgeAlwaysDeg, p.sharpEdgeAngleDeg));
-  // Two equilateral faces of edge l_ave tilt apart by about sigma (2 / 0.87 l_ave) under noise sigma.
-  t.sigma = noise * 0.87 * g.meanEdge / 2;
+  // Two equilateral faces of edge l_ave tilt apart by about sigma 2 / (kEquilateralHeight l_ave) under noise sigma.
+  t.sigma = noise * kEquilateralHeight * g.meanEdge / 2;
   const int n = g.VertexCount();
   std::vector<SharpVerdict> verdict(n);
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
@@ -197,8 +201,8 @@ MeshNoiseAngles MeasureNoiseAngles(const SurfaceGraph& g) {
   std::vector<double> scaled, unscaled;
   // Noise sigma tilts two faces of heights hc, hd over their edge apart by about sigma (1/hc + 1/hd):
   // scaled, each edge's angle is what it would be between equilateral faces of edge l_ave (heights
-  // 0.87 l_ave), so that slivers, tilted most by the same noise, do not read as a noisier mesh.
-  const double equilateral = 2 / (0.87 * g.meanEdge);
+  // kEquilateralHeight l_ave), so that slivers, tilted most by the same noise, do not read as a noisier mesh.
+  const double equilateral = 2 / (kEquilateralHeight * g.meanEdge);
   g.ForEachSampledEdgePair([&](int f, int o, int a, int b) {
     const double angle = EdgeAngle(g, f, o, a, b);
     unscaled.push_back(angle);

@@ -71,13 +71,16 @@ struct SurfaceGraph {
   }
 
   // Mean length of the edges at v over its faces (an edge two of them hold counted twice): how
-  // finely the mesh is cut there.
+  // finely the mesh is cut there. From faceEdge: face[j] -> face[j + 1] is edge j.
   double MeanRingEdge(int v) const {
     double sum = 0;
     int count = 0;
-    for (int i = FaceBegin(v); i < FaceEnd(v); ++i)
-      for (int y : face[vfList[i]])
-        if (y != v) sum += (pos[y] - pos[v]).norm(), ++count;
+    for (int i = FaceBegin(v); i < FaceEnd(v); ++i) {
+      const int f = vfList[i];
+      const int j = face[f][0] == v ? 0 : (face[f][1] == v ? 1 : 2);
+      for (int k = 0; k < 3; ++k)
+        if (k != j) sum += faceEdge[f][(j + 1) % 3 == k ? j : k], ++count;
+    }
     return count > 0 ? sum / count : 0;
   }
 
