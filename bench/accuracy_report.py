@@ -329,8 +329,8 @@ for n in ("1", "2", "5", "10", "20"):
             claim(val("smooth_grids", shape, n, "NVV quadric (default) k=" + k, m) <
                   val("smooth_grids", shape, n, "NVV quadric, 1 fit k=" + k, m), "one fit round costs accuracy")
 clean_normal_max = max(fnum(r["normal_p90"]) for r in grids if r["noise"] == "0")
-claim(val("creases_f1", "roof 175°", "10", "NVV k=3", "recall") < 1 and
-      val("creases_f1", "roof 175°", "10", "NVV k=3", "precision") == 1, "knife edge: misses a few, adds none")
+claim(val("creases_f1", "roof 175°", "10", "NVV k=3", "f1") == 1 and
+      val("creases_f1", "roof 175°", "20", "NVV k=3", "f1") == 1, "knife edge: the sharp edges add what the votes miss")
 
 # ---- the Python libraries' estimators (bench/python_peers.py) on the meshes of the smooth sections
 py_text = {}
@@ -823,8 +823,8 @@ if net_summary:
           ns("ABC", "10", "MeshLab dihedral 60", "adjusted_rand") < 0.5,
           "the ABC model at 10 %: the defaults at 40 deg catch the 45 deg curves the peers at 60 deg leave out, above the peers' best")
     roof = INDEX["network"].get(("roof 175°", "10", "NVV defaults", "40"))
-    claim(roof is not None and roof["lines_found"] == "1" and roof["patches_found"] == "1" and fnum(roof["gap_pct"]) < 5,
-          "the 175° roof: its one line found, but one patch for two")
+    claim(roof is not None and roof["lines_found"] == "1" and roof["patches_found"] == "2" and fnum(roof["gap_pct"]) < 5,
+          "the 175° roof at 10 %: its one line and its two patches")
     claim(ns("ABC", "10", "MeshLab dihedral best", "patches_found") > 20 * ns("ABC", "10", "MeshLab dihedral best", "patches_true") and
           ns("default", "10", "NVV defaults", "adjusted_rand") < ns("default", "10", "MeshLab dihedral best", "adjusted_rand"),
           "the peers over-select into specks that ARI forgives; the defaults' merges cost more")
@@ -834,8 +834,8 @@ if net_summary:
               0.1 * ns(fam, "0", "NVV defaults", "patches_true") and
               ns(fam, "0", "NVV defaults", "adjusted_rand") < ns(fam, "0", "MeshLab dihedral best", "adjusted_rand"),
               "clean export and coarse meshes: lines found, patch counts near the truth, ARI below the peers' best")
-    claim(ns("export", "10", "NVV defaults", "line_f1") < ns("export", "10", "MeshLab dihedral best", "line_f1") - 0.3,
-          "noisy export meshes: the votes fail")
+    claim(0.55 + 0.1 < ns("export", "10", "NVV defaults", "line_f1") < ns("export", "10", "MeshLab dihedral best", "line_f1"),
+          "noisy export meshes: the isolated sharp edges bring lines back (0.55 before), still below the peers' best")
     for fam in ("export", "coarse"):
         small = [int(r["small_patches"]) for r in net_truth if r["family"] == fam and "small_patches" in r]
         net_text["NET_SMALL_" + fam.upper()] = "%d" % sum(small) if small else "–"

@@ -173,7 +173,7 @@ Status RunNormalVectorVoting(const SurfaceGraph& g, const Params& p, std::vector
   }
   ClassifyBySharpEdges(g, p, sharp, noise.noiseAngle, threads, out, sum.sharpEdgeChanged);
   sum.sharpEdges = sharp == SharpEdgeRole::DecideAll;
-  sum.sharpEdgesAdded = sharp == SharpEdgeRole::AddFeatures;
+  sum.sharpEdgesAdded = sharp == SharpEdgeRole::AddFeatures || sharp == SharpEdgeRole::AddIsolated;
   sum.secondsPass1 = SecondsSince(t0);
 
   const auto t1 = Clock::now();

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "crease_thinning.h"  // DemoteToSurface
 #include "tuning.h"
@@ -171,8 +172,8 @@ bool Apply(const SurfaceGraph& g, int v, const SharpVerdict& s, VertexResult& r)
 
 SharpEdgeRole SharpEdgeRoleFor(const Params& p, double noise) {
   if (!(p.sharpEdgeAngleDeg > 0)) return SharpEdgeRole::None;
-  if (!(noise < DegToRad(tuning::kLightNoiseDeg))) return SharpEdgeRole::None;  // noisy: the votes decide everywhere
-  return noise < DegToRad(tuning::kCleanMeshNoiseDeg) ? SharpEdgeRole::DecideAll : SharpEdgeRole::AddFeatures;
+  if (noise < DegToRad(tuning::kCleanMeshNoiseDeg)) return SharpEdgeRole::DecideAll;
+  return noise < DegToRad(tuning::kLightNoiseDeg) ? SharpEdgeRole::AddFeatures : SharpEdgeRole::AddIsolated;
 }
 
 void ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, SharpEdgeRole role, double noise, int threads,
@@ -181,7 +182,10 @@ void ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, SharpEdgeRole 
   if (role == SharpEdgeRole::None) return;
   Thresholds t;
   t.sharp = DegToRad(std::min(p.sharpEdgeAngleDeg, p.creaseAngleDeg));
-  t.always = DegToRad(std::max(tuning::kSharpEdgeAlwaysDeg, p.sharpEdgeAngleDeg));
+  // Noisy: no edge is sharp by its angle alone (noise takes a coarse cylinder's 36 deg strip lines over
+  // kSharpEdgeAlwaysDeg); only isolated edges count, so chamfers one edge wide are left to the votes.
+  t.always = role == SharpEdgeRole::AddIsolated ? std::numeric_limits<double>::infinity()
+                                                : DegToRad(std::max(tuning::kSharpEdgeAlwaysDeg, p.sharpEdgeAngleDeg));
   // Two equilateral faces of edge l_ave tilt apart by about sigma 2 / (kEquilateralHeight l_ave) under noise sigma.
   t.sigma = noise * kEquilateralHeight * g.meanEdge / 2;
   const int n = g.VertexCount();
@@ -191,8 +195,8 @@ void ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, SharpEdgeRole 
     if (res[v].cls != VertexClass::Invalid && g.Referenced(v)) verdict[v] = JudgeVertex(g, v, t);
   for (int v = 0; v < n; ++v) {
     if (res[v].cls == VertexClass::Invalid || !g.Referenced(v)) continue;
-    // Lightly noisy: a vertex without sharp edges keeps the votes' class.
-    if (role == SharpEdgeRole::AddFeatures && VertexClass(verdict[v].cls) == VertexClass::Surface) continue;
+    // Noisy: a vertex without sharp edges keeps the votes' class.
+    if (role != SharpEdgeRole::DecideAll && VertexClass(verdict[v].cls) == VertexClass::Surface) continue;
     changed += Apply(g, v, verdict[v], res[v]);
   }
 }

@@ -5,18 +5,21 @@
 // of k l_ave blurs (two crease rows closer than the ball's radius merge, and thinning the merged
 // band to one ridge drops real crease vertices). On a clean mesh this stage
 // therefore decides every class from the mesh edges themselves; where noise scatters the faces'
-// normals, pass 1's votes and the ridge fit decide, as in the paper; in between, on a lightly noisy
-// mesh, the sharp edges add the creases the votes miss (those below the crease angle, rows closer
-// than the ball) and the votes keep the rest.
+// normals, pass 1's votes and the ridge fit decide, as in the paper, and the sharp edges only add
+// the creases the votes miss (those below the crease angle, rows closer than the ball, faces the
+// ball spans whole on a coarse mesh).
 //
 //  - The stage decides every class on a clean mesh: its noise angle below kCleanMeshNoiseDeg. The
 //    noise angle is the lowest tenth of the dihedral angles, each scaled to what the same noise does
 //    between faces of edge l_ave (noise sigma tilts faces of heights hc, hd over their edge apart by
 //    about sigma (1/hc + 1/hd): a CAD export's slivers tilt most and must not read as a noisier mesh).
 //    Every CAD export measured has exactly 0 there (its planes and strips hold flat edges), 1 % noise
-//    about 0.2 deg, 5 % 0.8 deg. Below kLightNoiseDeg (about 9 % noise on a regular grid) it only
-//    adds: a vertex on sharp edges becomes a crease or corner, any other keeps the votes' class. On
-//    noisier meshes the votes and the ridge fit decide alone, to the bit.
+//    about 0.2 deg, 5 % 0.8 deg. On a noisy mesh it only adds: a vertex on sharp edges becomes a
+//    crease or corner, any other keeps the votes' class. From kLightNoiseDeg (about 9 % noise on a
+//    regular grid) no edge is sharp by its angle alone (kSharpEdgeAlwaysDeg): only isolated edges
+//    count, since noise takes a coarse cylinder's strip lines over that angle; chamfers one edge
+//    wide (two creases side by side, neither isolated) are then left to the votes. The noise test
+//    scales with the noise, so the stage fades out by itself as the noise grows.
 //  - An edge (v, x) between faces (v, x, c) and (x, v, d) is sharp where its dihedral angle theta
 //    is at least the sharp-edge angle (or the crease angle, if lower), stands well above what the
 //    mesh's noise does to faces of those heights over the edge (slivers tilt most), and either is
@@ -53,9 +56,10 @@ MeshNoiseAngles MeasureNoiseAngles(const SurfaceGraph& g);
 
 // What a mesh's sharp edges did to the votes' classes.
 enum class SharpEdgeRole {
-  None,         // a noisy mesh (or Params::sharpEdgeAngleDeg = 0): the votes' classes stand
+  None,         // Params::sharpEdgeAngleDeg = 0: the votes' classes stand
   DecideAll,    // a clean mesh: every class from the sharp edges
   AddFeatures,  // a lightly noisy mesh: vertices on sharp edges become creases and corners, the rest keep the votes' class
+  AddIsolated,  // a noisier mesh: the same from isolated sharp edges only (none is sharp by its angle alone)
 };
 
 // What the sharp edges will do on a mesh of this noise angle (radians, MeshNoiseAngles::scaled),

@@ -70,10 +70,15 @@ constexpr double kGapReachOverRadius = 2.0;
 // and fine parts under 1 % noise, 0.8 deg and more under 5 %. Both angles are 0.91 x the values chosen
 // before the scaling (0.67, 1.5 deg): what the scaling does to a regular grid, whose roles stay.
 constexpr double kCleanMeshNoiseDeg = 0.61;
-// Below this noise angle (about 9 % noise on a regular grid) the sharp edges still add the creases and
-// corners the votes miss, the votes keep every other class: the CAD parts at 5 % noise, default and fine
-// meshes' +-1-edge F1 0.82 -> 0.93 and 0.83 -> 0.95, no cell of the synthetic crease set worse; at 3 deg
-// (10 % noise too) the 10 % roofs lost rows to noise the 30x rule let through.
+// Above the clean angle the sharp edges add the creases and corners the votes miss, the votes keep every
+// other class (the CAD parts at 5 % noise, default and fine meshes' +-1-edge F1 0.82 -> 0.93 and 0.83 ->
+// 0.95, no cell of the synthetic crease set worse). From this noise angle on (about 9 % noise on a regular
+// grid) only isolated sharp edges count, none by kSharpEdgeAlwaysDeg: with it the 10 % roofs gained a
+// lone noisy edge of 50 deg, a 10-strip cylinder at 5 % its 36 deg strip lines, and smooth spheres and tori
+// at 20 % false creases. Isolated edges only, against the votes alone there: the CAD parts gain in 28
+// cells of 5-20 % noise and lose in one (ribs_coarse at 20 %, +-1-edge F1 0.28 -> 0.27; draft_boss_coarse
+// at 10 % 0.42 -> 0.60, ribs_default 0.68 -> 0.79), the synthetic crease set gains in 25 cells and loses
+// in none, the smooth grids and variants are unchanged to the bit.
 constexpr double kLightNoiseDeg = 1.36;
 // An edge must turn this many times what the mesh's noise tilts faces of its heights (the noise
 // angle is the lowest tenth, about a third of the typical noise angle): at 8 one in a hundred

@@ -66,7 +66,7 @@ struct Summary {
   std::size_t perClass[4] = {0, 0, 0, 0};
   std::size_t capped = 0;           // vertices whose march hit the neighbourhood cap
   bool sharpEdges = false;          // a clean mesh: the classes came from its sharp edges (sharp_edges.h)
-  bool sharpEdgesAdded = false;     // a lightly noisy mesh: its sharp edges added creases and corners to the votes' classes
+  bool sharpEdgesAdded = false;     // a noisy mesh: its sharp edges added creases and corners to the votes' classes
   std::size_t sharpEdgeChanged = 0; // vertices whose class the sharp edges changed from the votes'
   std::size_t thinned = 0;          // feature vertices thinning removed: band vertices made surface, less gap vertices made creases (crease_thinning.h)
   std::size_t nonFiniteVertices = 0;

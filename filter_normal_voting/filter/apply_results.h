@@ -283,7 +283,7 @@ inline std::string SummaryLine(const Summary& s) {
     std::snprintf(sharp, sizeof sharp, "; a clean mesh: classes from its sharp edges, %zu changed from the votes'",
                   s.sharpEdgeChanged);
   else if (s.sharpEdgesAdded)
-    std::snprintf(sharp, sizeof sharp, "; lightly noisy: %zu vertices on its sharp edges changed class",
+    std::snprintf(sharp, sizeof sharp, "; noisy: %zu vertices on its sharp edges changed class",
                   s.sharpEdgeChanged);
   char buf[640];
   std::snprintf(buf, sizeof buf,

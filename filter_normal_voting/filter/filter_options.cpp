@@ -40,9 +40,10 @@ std::vector<ParamSpec> AlgorithmParameters() {
      "On a mesh free of noise (a CAD export) the classes come from the mesh edges instead of the votes: an "
      "edge whose faces' normals are at least this far apart (and the crease angle, if lower) and that turns "
      "more than the lines beside it (a curved face cut into strips turns at every strip) is a crease edge, "
-     "so every vertex of a crease is found however close two creases run. On a lightly noisy mesh (up to about "
-     "5 % of the edge length) such edges add the creases the votes miss and the votes keep the rest; noisier "
-     "meshes are not affected. 0: the votes everywhere (the paper).",
+     "so every vertex of a crease is found however close two creases run. On a noisy mesh such edges add the "
+     "creases the votes miss and the votes keep the rest (from about 9 % of the edge length only edges that "
+     "turn much more than the lines beside them; the noise hides more of them as it grows). 0: the votes "
+     "everywhere (the paper).",
      10.0, 0.0, limits::kMaxAngleDeg, {}, {}, false},
     {"stop_at_creases", ParamType::Bool, "Stop curvature at creases",
      "When estimating curvature, do not let a neighbourhood grow across crease and corner vertices, "
