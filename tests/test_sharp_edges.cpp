@@ -38,6 +38,13 @@ void Tent(TMesh& m, double alphaDeg, int n) {
     }
 }
 
+// How many faces of the cube [-h, h]^3 the point p lies on: 2 on an edge, 3 at a corner.
+int CubeFacesAt(const vcg::Point3d& p, double h) {
+  int faces = 0;
+  for (int j = 0; j < 3; ++j) faces += std::abs(std::abs(p[j]) - h) < 1e-9;
+  return faces;
+}
+
 }  // namespace
 
 // A 25 deg crease is below the default crease angle of 60 deg, so the votes do not call it one;
@@ -110,9 +117,7 @@ TEST(SharpEdges, ACleanCubeIsExactlyItsEdgesAndCorners) {
   const NvvRun r = RunNvv(m, SharpEdges(nvv::Params().sharpEdgeAngleDeg));
   int wrong = 0, corners = 0;
   for (std::size_t i = 0; i < m.vert.size(); ++i) {
-    const auto& p = m.vert[i].P();
-    int extreme = 0;
-    for (int j = 0; j < 3; ++j) extreme += std::abs(std::abs(p[j]) - 5) < 1e-9;
+    const int extreme = CubeFacesAt(m.vert[i].cP(), 5);
     wrong += (extreme >= 2) != nvv::IsFeature(r.res[i]);
     if (extreme == 3) corners += r.res[i].cls == nvv::VertexClass::Corner;
   }
@@ -139,9 +144,8 @@ TEST(SharpEdges, OnNoisyMeshesTheyOnlyAddAndOnlyOnTheEdges) {
     TMesh m;
     const double h = 5.0;
     nvv_shapes::Cube(m, h, 21);
-    std::vector<int> onEdge(m.vert.size());  // before the noise: two coordinates at +-h
-    for (std::size_t i = 0; i < m.vert.size(); ++i)
-      for (int j = 0; j < 3; ++j) onEdge[i] += std::abs(std::abs(m.vert[i].cP()[j]) - h) < 1e-9;
+    std::vector<int> onEdge(m.vert.size());  // before the noise
+    for (std::size_t i = 0; i < m.vert.size(); ++i) onEdge[i] = CubeFacesAt(m.vert[i].cP(), h);
     NoiseAlongNormals(m, noise * nvv_shapes::MeanEdge(m), 3);
     const NvvRun on = RunNvv(m, SharpEdges(nvv::Params().sharpEdgeAngleDeg)), votes = RunNvv(m, SharpEdges(0));
     EXPECT_FALSE(on.sum.sharpEdges) << "noise " << noise;
@@ -175,9 +179,8 @@ TEST(SharpEdges, OnANoisyCoarseBoxTheyAddTheEdgesTheVotesMiss) {
     TMesh m;
     const double h = 5.0;
     nvv_shapes::Cube(m, h, 3);
-    std::vector<int> onEdge(m.vert.size());
-    for (std::size_t i = 0; i < m.vert.size(); ++i)
-      for (int j = 0; j < 3; ++j) onEdge[i] += std::abs(std::abs(m.vert[i].cP()[j]) - h) < 1e-9;
+    std::vector<int> onEdge(m.vert.size());  // before the noise
+    for (std::size_t i = 0; i < m.vert.size(); ++i) onEdge[i] = CubeFacesAt(m.vert[i].cP(), h);
     NoiseAlongNormals(m, 0.1 * nvv_shapes::MeanEdge(m), seed);
     nvv::Params one = SharpEdges(nvv::Params().sharpEdgeAngleDeg), two = one;
     one.threads = 1;
