@@ -38,6 +38,28 @@ void Tent(TMesh& m, double alphaDeg, int n) {
     }
 }
 
+// A profile in the xz plane extruded along y over n cells: columns one unit of arc apart, the
+// profile turning by turnDeg[i] at column i (0 elsewhere), each cell cut into two triangles.
+void Profile(TMesh& m, const std::vector<double>& turnDeg, int n) {
+  m.Clear();
+  const int cols = int(turnDeg.size());
+  std::vector<vcg::Point3d> at(std::size_t(cols), vcg::Point3d(0, 0, 0));
+  double heading = 0;
+  for (int i = 1; i < cols; ++i) {
+    heading += turnDeg[std::size_t(i - 1)] * 3.14159265358979 / 180;
+    at[std::size_t(i)] = at[std::size_t(i - 1)] + vcg::Point3d(std::cos(heading), 0, std::sin(heading));
+  }
+  auto v = vcg::tri::Allocator<TMesh>::AddVertices(m, std::size_t(cols * (n + 1)));
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i < cols; ++i) v[j * cols + i].P() = at[std::size_t(i)] + vcg::Point3d(0, j, 0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i + 1 < cols; ++i) {
+      const int a = j * cols + i, b = a + 1, c = a + cols + 1, d = a + cols;
+      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[b], &m.vert[c]);
+      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[c], &m.vert[d]);
+    }
+}
+
 // How many faces of the cube [-h, h]^3 the point p lies on: 2 on an edge, 3 at a corner.
 int CubeFacesAt(const vcg::Point3d& p, double h) {
   int faces = 0;
@@ -107,6 +129,36 @@ TEST(SharpEdges, TessellatedCurvatureIsNotACreaseButTheRimsAre) {
   EXPECT_EQ(32, rim);
   EXPECT_EQ(rim, rimFound);
   EXPECT_EQ(0, others);
+}
+
+// A shallow chamfer one face wide: the profile turns 20 deg, runs one edge, turns 30 deg. Neither
+// line is isolated (each has the other beside it), yet both are creases, every vertex on them and
+// nothing else, since the surface beyond each is flat. Two strips of a fillet (15, 30, 15 deg) are
+// a curved face: no line of them is a crease, though each has a flat sheet on one side.
+TEST(SharpEdges, ACleanChamferIsTwoCreasesTwoStripsOfAFilletNone) {
+  std::vector<double> chamfer(13, 0.0), fillet(13, 0.0);
+  chamfer[6] = 20, chamfer[7] = 30;
+  fillet[5] = 15, fillet[6] = 30, fillet[7] = 15;
+  TMesh m;
+  Profile(m, chamfer, 12);
+  const NvvRun r = RunNvv(m, WithK(3));
+  ASSERT_TRUE(r.st.ok) << r.st.message;
+  EXPECT_TRUE(r.sum.sharpEdges);
+  int wrong = 0, onLines = 0;
+  for (std::size_t i = 0; i < m.vert.size(); ++i) {
+    const int column = int(i % 13);
+    const bool line = column == 6 || column == 7;
+    onLines += line && nvv::IsFeature(r.res[i]);
+    wrong += line != nvv::IsFeature(r.res[i]);
+  }
+  EXPECT_EQ(26, onLines);
+  EXPECT_EQ(0, wrong);
+  Profile(m, fillet, 12);
+  const NvvRun f = RunNvv(m, WithK(3));
+  ASSERT_TRUE(f.sum.sharpEdges);
+  int found = 0;
+  for (std::size_t i = 0; i < m.vert.size(); ++i) found += nvv::IsFeature(f.res[i]);
+  EXPECT_EQ(0, found);
 }
 
 // A cube's twelve edges on a clean grid: every edge vertex is a feature, the eight corners are

@@ -90,7 +90,44 @@ struct Thresholds {
   double sharp;   // the sharp-edge angle (rad)
   double always;  // sharp whatever the neighbours (rad)
   double sigma;   // the positions' noise the mesh's noise angle implies
+  bool chamfers;  // two parallel lines between flat sheets are both sharp
 };
+
+// Distance of p from the line through a and b.
+double DistanceToLine(const SurfaceGraph& g, int a, int b, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d e = g.pos[b] - g.pos[a];
+  const double len = e.norm();
+  return len > 0 ? e.cross(p - g.pos[a]).norm() / len : 0;
+}
+
+// True when the line parallel to e through c, the sharpest one there (at least `sharp`), has a
+// flat sheet beyond it, seen from the edge (v, x): c's line and (v, x) are a chamfer's two lines.
+// On a curved face cut into strips the next strip's line lies beyond, and the surface turns there.
+bool FlatBeyondParallelLine(const SurfaceGraph& g, int v, int x, int c, const Eigen::Vector3d& e, double sharp,
+                            double always) {
+  double best = 0;
+  int bestH = -1, bestO = -1, bestY = -1;
+  for (int i = g.FaceBegin(c); i < g.FaceEnd(c); ++i) {
+    const int h = g.vfList[i];
+    if (!(g.faceArea[h] > 0)) continue;
+    for (int y : g.face[h]) {
+      if (y == c || std::abs((g.pos[y] - g.pos[c]).normalized().dot(e)) < tuning::kSharpEdgeParallelCos) continue;
+      g.ForEachFaceAcross(h, c, y, [&](int o) {
+        if (o <= h || !(g.faceArea[o] > 0)) return;
+        const double angle = EdgeAngle(g, h, o, c, y);
+        if (angle > best) best = angle, bestH = h, bestO = o, bestY = y;
+      });
+    }
+  }
+  if (bestH < 0 || best < sharp * (1 - 1e-9)) return false;
+  // The far vertex of that line's faces: the one farther from (v, x).
+  const int zh = ThirdVertex(g.face[bestH], c, bestY), zo = ThirdVertex(g.face[bestO], c, bestY);
+  const bool farH = DistanceToLine(g, v, x, g.pos[zh]) >= DistanceToLine(g, v, x, g.pos[zo]);
+  const int z = farH ? zh : zo;
+  if (z == v || z == x) return false;
+  return best >= tuning::kSharpEdgeIsolation *
+                     std::max(ParallelTurn(g, z, e), OtherEdgesTurn(g, farH ? bestH : bestO, c, bestY, z, always));
+}
 
 // True when the edge (v, x) between faces f = (v, x, c) and o = (x, v, d) at dihedral angle theta
 // is sharp (sharp_edges.h).
@@ -101,9 +138,13 @@ bool IsSharpEdge(const SurfaceGraph& g, int f, int o, int v, int x, int c, int d
   if (!(hc > 0 && hd > 0) || theta < tuning::kSharpEdgeOverNoise * t.sigma * (1 / hc + 1 / hd)) return false;
   if (theta >= t.always) return true;
   const Eigen::Vector3d e = (g.pos[x] - g.pos[v]).normalized();
-  return theta >= tuning::kSharpEdgeIsolation * std::max(ParallelTurn(g, c, e), ParallelTurn(g, d, e)) &&
-         theta >= tuning::kSharpEdgeIsolation * std::max(OtherEdgesTurn(g, f, v, x, c, t.always),
-                                                          OtherEdgesTurn(g, o, v, x, d, t.always));
+  const double pc = ParallelTurn(g, c, e), pd = ParallelTurn(g, d, e);
+  const bool flatC = theta >= tuning::kSharpEdgeIsolation * std::max(pc, OtherEdgesTurn(g, f, v, x, c, t.always));
+  const bool flatD = theta >= tuning::kSharpEdgeIsolation * std::max(pd, OtherEdgesTurn(g, o, v, x, d, t.always));
+  if (flatC && flatD) return true;
+  if (!t.chamfers || flatC == flatD) return false;
+  return flatD ? FlatBeyondParallelLine(g, v, x, c, e, t.sharp, t.always)
+               : FlatBeyondParallelLine(g, v, x, d, e, t.sharp, t.always);
 }
 
 SharpVerdict JudgeVertex(const SurfaceGraph& g, int v, const Thresholds& t) {
@@ -188,6 +229,7 @@ void ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, SharpEdgeRole 
                                                 : DegToRad(std::max(tuning::kSharpEdgeAlwaysDeg, p.sharpEdgeAngleDeg));
   // Two equilateral faces of edge l_ave tilt apart by about sigma 2 / (kEquilateralHeight l_ave) under noise sigma.
   t.sigma = noise * kEquilateralHeight * g.meanEdge / 2;
+  t.chamfers = role == SharpEdgeRole::DecideAll;
   const int n = g.VertexCount();
   std::vector<SharpVerdict> verdict(n);
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)

@@ -26,7 +26,11 @@
 //    at least kSharpEdgeAlwaysDeg or is isolated: theta >= kSharpEdgeIsolation * the largest
 //    dihedral angle of the edges at c and at d that run parallel to (v, x). A curved face cut into
 //    strips turns by the same angle at every strip (not isolated: not a crease, whatever the
-//    angle); a crease between two sheets turns once.
+//    angle); a crease between two sheets turns once. On a clean mesh an edge flat on one side
+//    and beside a parallel line on the other is sharp too where the surface beyond that line is
+//    flat again (its faces' far edges turn at most 1 / kSharpEdgeIsolation of it): a chamfer's two
+//    lines, each below kSharpEdgeAlwaysDeg (a shallow chamfer). Two or more strips of a fillet
+//    have a third line beyond the second.
 //  - A vertex with sharp edges along one line is a CREASE (tangent along them, cusp angle their
 //    dihedral angle, normal the bisector), with sharp edges along several lines a CORNER, and
 //    without any a SURFACE vertex (its normal restarts from its one-ring's).
