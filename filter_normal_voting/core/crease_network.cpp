@@ -132,9 +132,10 @@ std::vector<CreaseLine> TraceLines(const SurfaceGraph& g, const std::vector<Vert
 }
 
 // Continues each line that stops at a crease vertex off the border (a gap, not an end): the
-// shortest path (through feature vertices where it can), within g_m and ahead of the line's direction, to a
-// vertex of another line (or of its own, when that closes a line longer than 2 g_m). Returns the
-// edges added.
+// shortest path (through feature vertices where it can), within `radius` and ahead of the line's direction, to a
+// vertex of another line (or of its own, when that closes a line longer than 2 g_m) or of the border:
+// under noise the last vertices before the border may vote like one sheet, and a line one edge short
+// of it leaves its two sheets one patch. Returns the edges added.
 std::vector<Edge> GapEdges(const SurfaceGraph& g, const std::vector<VertexResult>& res, const std::vector<Edge>& edges,
                            const std::vector<CreaseLine>& lines, const std::vector<int>& edgeLine, double radius) {
   const int n = g.VertexCount();
@@ -166,11 +167,11 @@ std::vector<Edge> GapEdges(const SurfaceGraph& g, const std::vector<VertexResult
       front.pop();
       const int x = it.second;
       if (it.first > dist[x]) continue;
-      if (x != v && lineOf[x] >= 0) {
+      if (x != v && (lineOf[x] >= 0 || g.OnBorder(x))) {
         const bool sameLine = lineOf[x] == edgeLine[e0];
         const bool ahead45 = (g.pos[x] - g.pos[v]).normalized().dot(ahead) >= tuning::kCreaseEdgeMinCosToTangent;
         if (ahead45 && (!sameLine || own.length > 2 * radius)) target = x;
-        continue;  // a line vertex ends the search there either way
+        continue;  // a line or border vertex ends the search there either way
       }
       for (int i = g.FaceBegin(x); i < g.FaceEnd(x); ++i)
         for (int y : g.face[g.vfList[i]]) {
