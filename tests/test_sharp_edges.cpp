@@ -161,6 +161,37 @@ TEST(SharpEdges, ACleanChamferIsTwoCreasesTwoStripsOfAFilletNone) {
   EXPECT_EQ(0, found);
 }
 
+// Under noise a chamfer's lines must also continue along another sharp edge (a noise edge beside
+// a crease stands alone). A 60 + 60 deg chamfer one face wide, 10 % noise (the votes see one crease
+// between the lines; the sharp edges count isolated edges only), 4 seeds: the sharp edges add
+// vertices of both lines (154 of 216 without the chamfer rule, 182 with it) and nothing else: off
+// the lines the same 4 vertices as without the rule (lone noise edges that pass the isolation test
+// by themselves: one beside a line, two in a flat sheet, one next to the border).
+TEST(SharpEdges, ANoisyChamferGetsBothLinesFromItsSharpEdges) {
+  std::vector<double> chamfer(13, 0.0);
+  chamfer[6] = 60, chamfer[7] = 60;
+  int lineVertices = 0, withSharp = 0, byVotes = 0, besideLines = 0, offLines = 0;
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    TMesh m;
+    Profile(m, chamfer, 30);
+    NoiseAlongNormals(m, 0.1 * nvv_shapes::MeanEdge(m), seed);
+    const NvvRun on = RunNvv(m, WithK(3)), votes = RunNvv(m, SharpEdges(0));
+    ASSERT_TRUE(on.sum.sharpEdgesAdded);
+    for (std::size_t i = 0; i < m.vert.size(); ++i) {
+      const int column = int(i % 13), row = int(i / 13);
+      if (row < 2 || row > 28) continue;  // the border's vertices have one side only
+      if (column == 6 || column == 7)
+        ++lineVertices, withSharp += nvv::IsFeature(on.res[i]), byVotes += nvv::IsFeature(votes.res[i]);
+      else
+        (column == 5 || column == 8 ? besideLines : offLines) += nvv::IsFeature(on.res[i]) && !nvv::IsFeature(votes.res[i]);
+    }
+  }
+  std::printf("[60 + 60 deg chamfer, 10 %% noise, 4 seeds] line vertices found %d of %d (votes alone %d); added one edge "
+              "beside the lines %d, farther %d\n", withSharp, lineVertices, byVotes, besideLines, offLines);
+  EXPECT_GE(withSharp, byVotes + lineVertices / 5);
+  EXPECT_LE(besideLines + offLines, 4);
+}
+
 // A cube's twelve edges on a clean grid: every edge vertex is a feature, the eight corners are
 // corners, nothing else is marked.
 TEST(SharpEdges, ACleanCubeIsExactlyItsEdgesAndCorners) {

@@ -91,6 +91,7 @@ struct Thresholds {
   double always;  // sharp whatever the neighbours (rad)
   double sigma;   // the positions' noise the mesh's noise angle implies
   bool chamfers;  // two parallel lines between flat sheets are both sharp
+  bool chamferChain;  // ... where one of them continues along another sharp edge
 };
 
 // Distance of p from the line through a and b.
@@ -129,6 +130,8 @@ bool FlatBeyondParallelLine(const SurfaceGraph& g, int v, int x, int c, const Ei
                      std::max(ParallelTurn(g, z, e), OtherEdgesTurn(g, farH ? bestH : bestO, c, bestY, z, always));
 }
 
+bool ContinuedBySharpEdge(const SurfaceGraph& g, int q, int p, const Eigen::Vector3d& e, const Thresholds& t);
+
 // True when the edge (v, x) between faces f = (v, x, c) and o = (x, v, d) at dihedral angle theta
 // is sharp (sharp_edges.h).
 bool IsSharpEdge(const SurfaceGraph& g, int f, int o, int v, int x, int c, int d, double theta, const Thresholds& t) {
@@ -143,8 +146,34 @@ bool IsSharpEdge(const SurfaceGraph& g, int f, int o, int v, int x, int c, int d
   const bool flatD = theta >= tuning::kSharpEdgeIsolation * std::max(pd, OtherEdgesTurn(g, o, v, x, d, t.always));
   if (flatC && flatD) return true;
   if (!t.chamfers || flatC == flatD) return false;
-  return flatD ? FlatBeyondParallelLine(g, v, x, c, e, t.sharp, t.always)
-               : FlatBeyondParallelLine(g, v, x, d, e, t.sharp, t.always);
+  // The line beside must not stand alone either: a crease with a lesser edge beside it is one crease.
+  if (theta * tuning::kSharpEdgeIsolation <= (flatD ? pc : pd)) return false;
+  if (!(flatD ? FlatBeyondParallelLine(g, v, x, c, e, t.sharp, t.always)
+              : FlatBeyondParallelLine(g, v, x, d, e, t.sharp, t.always)))
+    return false;
+  return !t.chamferChain || ContinuedBySharpEdge(g, v, x, e, t) || ContinuedBySharpEdge(g, x, v, -e, t);
+}
+
+// True when an edge of p running on along e (away from q) is sharp: a chamfer's line is a chain of
+// edges, a noise edge beside a crease stands alone.
+bool ContinuedBySharpEdge(const SurfaceGraph& g, int q, int p, const Eigen::Vector3d& e, const Thresholds& t) {
+  Thresholds single = t;
+  single.chamferChain = false;
+  bool found = false;
+  for (int i = g.FaceBegin(p); i < g.FaceEnd(p) && !found; ++i) {
+    const int h = g.vfList[i];
+    if (!(g.faceArea[h] > 0)) continue;
+    for (int y : g.face[h]) {
+      if (y == p || y == q || (g.pos[y] - g.pos[p]).normalized().dot(e) < tuning::kCosSameLine) continue;
+      g.ForEachFaceAcross(h, p, y, [&](int o) {
+        if (found || o < h || !(g.faceArea[o] > 0)) return;
+        const int c = ThirdVertex(g.face[h], p, y), d = ThirdVertex(g.face[o], p, y);
+        if (c == d) return;
+        found = IsSharpEdge(g, h, o, p, y, c, d, EdgeAngle(g, h, o, p, y), single);
+      });
+    }
+  }
+  return found;
 }
 
 SharpVerdict JudgeVertex(const SurfaceGraph& g, int v, const Thresholds& t) {
@@ -229,7 +258,8 @@ void ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, SharpEdgeRole 
                                                 : DegToRad(std::max(tuning::kSharpEdgeAlwaysDeg, p.sharpEdgeAngleDeg));
   // Two equilateral faces of edge l_ave tilt apart by about sigma 2 / (kEquilateralHeight l_ave) under noise sigma.
   t.sigma = noise * kEquilateralHeight * g.meanEdge / 2;
-  t.chamfers = role == SharpEdgeRole::DecideAll;
+  t.chamfers = true;
+  t.chamferChain = role != SharpEdgeRole::DecideAll;
   const int n = g.VertexCount();
   std::vector<SharpVerdict> verdict(n);
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)

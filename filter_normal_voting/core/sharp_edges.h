@@ -26,11 +26,13 @@
 //    at least kSharpEdgeAlwaysDeg or is isolated: theta >= kSharpEdgeIsolation * the largest
 //    dihedral angle of the edges at c and at d that run parallel to (v, x). A curved face cut into
 //    strips turns by the same angle at every strip (not isolated: not a crease, whatever the
-//    angle); a crease between two sheets turns once. On a clean mesh an edge flat on one side
-//    and beside a parallel line on the other is sharp too where the surface beyond that line is
-//    flat again (its faces' far edges turn at most 1 / kSharpEdgeIsolation of it): a chamfer's two
-//    lines, each below kSharpEdgeAlwaysDeg (a shallow chamfer). Two or more strips of a fillet
-//    have a third line beyond the second.
+//    angle); a crease between two sheets turns once. An edge flat on one side and beside a
+//    parallel line on the other is sharp too where that line does not stand alone either (it
+//    turns less than kSharpEdgeIsolation times the edge) and the surface beyond it is flat again
+//    (its faces' far edges turn at most 1 / kSharpEdgeIsolation of it): a chamfer's two lines,
+//    below kSharpEdgeAlwaysDeg (a shallow chamfer) or under noise. Two or more strips of a fillet
+//    have a third line beyond the second. On a noisy mesh one end of such an edge must also run
+//    on along another sharp edge: a chamfer's line is a chain, a noise edge beside a crease is alone.
 //  - A vertex with sharp edges along one line is a CREASE (tangent along them, cusp angle their
 //    dihedral angle, normal the bisector), with sharp edges along several lines a CORNER, and
 //    without any a SURFACE vertex (its normal restarts from its one-ring's).
