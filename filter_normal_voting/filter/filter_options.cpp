@@ -39,7 +39,8 @@ std::vector<ParamSpec> AlgorithmParameters() {
     {"sharp_edge_angle", ParamType::Float, "Sharp edge angle on clean meshes (deg)",
      "On a mesh free of noise (a CAD export) the classes come from the mesh edges instead of the votes: an "
      "edge whose faces' normals are at least this far apart (and the crease angle, if lower) and that turns "
-     "more than the lines beside it (a curved face cut into strips turns at every strip) is a crease edge, "
+     "more than the lines beside it (a curved face cut into strips turns at every strip; a chamfer's two lines, "
+     "flat beyond, both count) is a crease edge, "
      "so every vertex of a crease is found however close two creases run. On a noisy mesh such edges add the "
      "creases the votes miss and the votes keep the rest (from about 9 % of the edge length only edges that "
      "turn much more than the lines beside them; the noise hides more of them as it grows). 0: the votes "
