@@ -100,7 +100,9 @@ TEST(CreaseNetwork, ARoofUnderNoiseRunsToTheBorderAndSplitsTwoPatches) {
         ++runs;
         twoPatches += n.net.patchCount == 2;
         EXPECT_LE(n.net.patchCount, 2) << alpha << " deg, noise " << noise << ", seed " << seed;
-        if (noise < 0.15) EXPECT_EQ(2, n.net.patchCount) << alpha << " deg, noise " << noise << ", seed " << seed;
+        if (noise < 0.15) {
+          EXPECT_EQ(2, n.net.patchCount) << alpha << " deg, noise " << noise << ", seed " << seed;
+        }
       }
   std::printf("[roofs, 10 and 20 %% noise] two patches in %d of %d runs\n", twoPatches, runs);
   EXPECT_GE(twoPatches, runs - 1);

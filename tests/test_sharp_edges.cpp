@@ -20,6 +20,17 @@ std::vector<char> Features(const NvvRun& r) {
   return f;
 }
 
+// The faces of a grid of vertices stored row by row, `cols` to a row, over `rows` rows of cells:
+// each cell cut into two triangles along the same diagonal.
+void GridFaces(TMesh& m, int cols, int rows) {
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i + 1 < cols; ++i) {
+      const int a = j * cols + i, b = a + 1, c = a + cols + 1, d = a + cols;
+      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[b], &m.vert[c]);
+      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[c], &m.vert[d]);
+    }
+}
+
 // A tent: two planes meeting along the y axis at a normal-angle alpha, on a grid of n x n cells.
 void Tent(TMesh& m, double alphaDeg, int n) {
   m.Clear();
@@ -30,12 +41,7 @@ void Tent(TMesh& m, double alphaDeg, int n) {
       const double x = i - n / 2.0, y = j;
       v[j * (n + 1) + i].P() = vcg::Point3d(x, y, -slope * std::abs(x));
     }
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
-      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[b], &m.vert[c]);
-      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[c], &m.vert[d]);
-    }
+  GridFaces(m, n + 1, n);
 }
 
 // A profile in the xz plane extruded along y over n cells: columns one unit of arc apart, the
@@ -52,12 +58,7 @@ void Profile(TMesh& m, const std::vector<double>& turnDeg, int n) {
   auto v = vcg::tri::Allocator<TMesh>::AddVertices(m, std::size_t(cols * (n + 1)));
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i < cols; ++i) v[j * cols + i].P() = at[std::size_t(i)] + vcg::Point3d(0, j, 0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i + 1 < cols; ++i) {
-      const int a = j * cols + i, b = a + 1, c = a + cols + 1, d = a + cols;
-      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[b], &m.vert[c]);
-      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[c], &m.vert[d]);
-    }
+  GridFaces(m, cols, n);
 }
 
 // How many faces of the cube [-h, h]^3 the point p lies on: 2 on an edge, 3 at a corner.

@@ -37,24 +37,34 @@ double HeightOver(const SurfaceGraph& g, int a, int b, int c) {
   return len > 0 ? e.cross(g.pos[c] - g.pos[a]).norm() / len : 0;
 }
 
-// How the surface turns at c along lines parallel to the unit direction e: the largest dihedral
-// angle over c's edges within kSharpEdgeParallelCos of e. On a cylinder cut into strips, the next
-// strip's line through c turns as much as the edge does; beside a crease between two sheets
-// nothing does; a crease through c across e (a corner's other edge) is not parallel and not counted.
-double ParallelTurn(const SurfaceGraph& g, int c, const Eigen::Vector3d& e) {
+// The sharpest edge (c, y) parallel to the unit direction e: within kSharpEdgeParallelCos of it,
+// its dihedral angle `turn` between faces h < o (turn 0 and h = -1 where no such edge turns).
+struct ParallelLine {
   double turn = 0;
+  int h = -1, o = -1, y = -1;
+};
+ParallelLine SharpestParallelLine(const SurfaceGraph& g, int c, const Eigen::Vector3d& e) {
+  ParallelLine best;
   for (int i = g.FaceBegin(c); i < g.FaceEnd(c); ++i) {
     const int h = g.vfList[i];
     if (!(g.faceArea[h] > 0)) continue;
     for (int y : g.face[h]) {
       if (y == c || std::abs((g.pos[y] - g.pos[c]).normalized().dot(e)) < tuning::kSharpEdgeParallelCos) continue;
       g.ForEachFaceAcross(h, c, y, [&](int o) {  // each face pair once, from its lower face
-        if (o > h && g.faceArea[o] > 0) turn = std::max(turn, EdgeAngle(g, h, o, c, y));
+        if (!(o > h && g.faceArea[o] > 0)) return;
+        const double angle = EdgeAngle(g, h, o, c, y);
+        if (angle > best.turn) best.turn = angle, best.h = h, best.o = o, best.y = y;
       });
     }
   }
-  return turn;
+  return best;
 }
+
+// How the surface turns at c along lines parallel to the unit direction e: the largest dihedral
+// angle over c's edges within kSharpEdgeParallelCos of e. On a cylinder cut into strips, the next
+// strip's line through c turns as much as the edge does; beside a crease between two sheets
+// nothing does; a crease through c across e (a corner's other edge) is not parallel and not counted.
+double ParallelTurn(const SurfaceGraph& g, int c, const Eigen::Vector3d& e) { return SharpestParallelLine(g, c, e).turn; }
 
 // An equilateral face's height per unit edge (sqrt(3) / 2, rounded as the noise angle's calibration was):
 // the faces of edge l_ave the noise angle and the sharp edges' noise test are scaled to.
@@ -90,44 +100,23 @@ struct Thresholds {
   double sharp;   // the sharp-edge angle (rad)
   double always;  // sharp whatever the neighbours (rad)
   double sigma;   // the positions' noise the mesh's noise angle implies
-  bool chamfers;  // two parallel lines between flat sheets are both sharp
-  bool chamferChain;  // ... where one of them continues along another sharp edge
+  bool chamferChain;  // a chamfer's line must continue along another sharp edge (noisy meshes)
 };
-
-// Distance of p from the line through a and b.
-double DistanceToLine(const SurfaceGraph& g, int a, int b, const Eigen::Vector3d& p) {
-  const Eigen::Vector3d e = g.pos[b] - g.pos[a];
-  const double len = e.norm();
-  return len > 0 ? e.cross(p - g.pos[a]).norm() / len : 0;
-}
 
 // True when the line parallel to e through c, the sharpest one there (at least `sharp`), has a
 // flat sheet beyond it, seen from the edge (v, x): c's line and (v, x) are a chamfer's two lines.
 // On a curved face cut into strips the next strip's line lies beyond, and the surface turns there.
 bool FlatBeyondParallelLine(const SurfaceGraph& g, int v, int x, int c, const Eigen::Vector3d& e, double sharp,
                             double always) {
-  double best = 0;
-  int bestH = -1, bestO = -1, bestY = -1;
-  for (int i = g.FaceBegin(c); i < g.FaceEnd(c); ++i) {
-    const int h = g.vfList[i];
-    if (!(g.faceArea[h] > 0)) continue;
-    for (int y : g.face[h]) {
-      if (y == c || std::abs((g.pos[y] - g.pos[c]).normalized().dot(e)) < tuning::kSharpEdgeParallelCos) continue;
-      g.ForEachFaceAcross(h, c, y, [&](int o) {
-        if (o <= h || !(g.faceArea[o] > 0)) return;
-        const double angle = EdgeAngle(g, h, o, c, y);
-        if (angle > best) best = angle, bestH = h, bestO = o, bestY = y;
-      });
-    }
-  }
-  if (bestH < 0 || best < sharp * (1 - 1e-9)) return false;
+  const ParallelLine line = SharpestParallelLine(g, c, e);
+  if (line.h < 0 || line.turn < sharp * (1 - 1e-9)) return false;
   // The far vertex of that line's faces: the one farther from (v, x).
-  const int zh = ThirdVertex(g.face[bestH], c, bestY), zo = ThirdVertex(g.face[bestO], c, bestY);
-  const bool farH = DistanceToLine(g, v, x, g.pos[zh]) >= DistanceToLine(g, v, x, g.pos[zo]);
+  const int zh = ThirdVertex(g.face[line.h], c, line.y), zo = ThirdVertex(g.face[line.o], c, line.y);
+  const bool farH = HeightOver(g, v, x, zh) >= HeightOver(g, v, x, zo);
   const int z = farH ? zh : zo;
   if (z == v || z == x) return false;
-  return best >= tuning::kSharpEdgeIsolation *
-                     std::max(ParallelTurn(g, z, e), OtherEdgesTurn(g, farH ? bestH : bestO, c, bestY, z, always));
+  return line.turn >= tuning::kSharpEdgeIsolation *
+                          std::max(ParallelTurn(g, z, e), OtherEdgesTurn(g, farH ? line.h : line.o, c, line.y, z, always));
 }
 
 bool ContinuedBySharpEdge(const SurfaceGraph& g, int q, int p, const Eigen::Vector3d& e, const Thresholds& t);
@@ -142,10 +131,13 @@ bool IsSharpEdge(const SurfaceGraph& g, int f, int o, int v, int x, int c, int d
   if (theta >= t.always) return true;
   const Eigen::Vector3d e = (g.pos[x] - g.pos[v]).normalized();
   const double pc = ParallelTurn(g, c, e), pd = ParallelTurn(g, d, e);
-  const bool flatC = theta >= tuning::kSharpEdgeIsolation * std::max(pc, OtherEdgesTurn(g, f, v, x, c, t.always));
-  const bool flatD = theta >= tuning::kSharpEdgeIsolation * std::max(pd, OtherEdgesTurn(g, o, v, x, d, t.always));
+  // Flat on a side: neither a parallel line nor the face's other edges turn 1 / kSharpEdgeIsolation as much.
+  const bool flatC = theta >= tuning::kSharpEdgeIsolation * pc &&
+                     theta >= tuning::kSharpEdgeIsolation * OtherEdgesTurn(g, f, v, x, c, t.always);
+  const bool flatD = theta >= tuning::kSharpEdgeIsolation * pd &&
+                     theta >= tuning::kSharpEdgeIsolation * OtherEdgesTurn(g, o, v, x, d, t.always);
   if (flatC && flatD) return true;
-  if (!t.chamfers || flatC == flatD) return false;
+  if (flatC == flatD) return false;
   // The line beside must not stand alone either: a crease with a lesser edge beside it is one crease.
   if (theta * tuning::kSharpEdgeIsolation <= (flatD ? pc : pd)) return false;
   if (!(flatD ? FlatBeyondParallelLine(g, v, x, c, e, t.sharp, t.always)
@@ -253,12 +245,11 @@ void ClassifyBySharpEdges(const SurfaceGraph& g, const Params& p, SharpEdgeRole 
   Thresholds t;
   t.sharp = DegToRad(std::min(p.sharpEdgeAngleDeg, p.creaseAngleDeg));
   // Noisy: no edge is sharp by its angle alone (noise takes a coarse cylinder's 36 deg strip lines over
-  // kSharpEdgeAlwaysDeg); only isolated edges count, so chamfers one edge wide are left to the votes.
+  // kSharpEdgeAlwaysDeg); only isolated edges and a chamfer's lines that run on along other sharp edges count.
   t.always = role == SharpEdgeRole::AddIsolated ? std::numeric_limits<double>::infinity()
                                                 : DegToRad(std::max(tuning::kSharpEdgeAlwaysDeg, p.sharpEdgeAngleDeg));
   // Two equilateral faces of edge l_ave tilt apart by about sigma 2 / (kEquilateralHeight l_ave) under noise sigma.
   t.sigma = noise * kEquilateralHeight * g.meanEdge / 2;
-  t.chamfers = true;
   t.chamferChain = role != SharpEdgeRole::DecideAll;
   const int n = g.VertexCount();
   std::vector<SharpVerdict> verdict(n);

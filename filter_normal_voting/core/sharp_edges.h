@@ -17,9 +17,9 @@
 //    about 0.2 deg, 5 % 0.8 deg. On a noisy mesh it only adds: a vertex on sharp edges becomes a
 //    crease or corner, any other keeps the votes' class. From kLightNoiseDeg (about 9 % noise on a
 //    regular grid) no edge is sharp by its angle alone (kSharpEdgeAlwaysDeg): only isolated edges
-//    count, since noise takes a coarse cylinder's strip lines over that angle; chamfers one edge
-//    wide (two creases side by side, neither isolated) are then left to the votes. The noise test
-//    scales with the noise, so the stage fades out by itself as the noise grows.
+//    and a chamfer's lines (below) count, since noise takes a coarse cylinder's strip lines over
+//    that angle. The noise test scales with the noise, so the stage fades out by itself as the
+//    noise grows.
 //  - An edge (v, x) between faces (v, x, c) and (x, v, d) is sharp where its dihedral angle theta
 //    is at least the sharp-edge angle (or the crease angle, if lower), stands well above what the
 //    mesh's noise does to faces of those heights over the edge (slivers tilt most), and either is

@@ -73,7 +73,7 @@ constexpr double kCleanMeshNoiseDeg = 0.61;
 // Above the clean angle the sharp edges add the creases and corners the votes miss, the votes keep every
 // other class (the CAD parts at 5 % noise, default and fine meshes' +-1-edge F1 0.82 -> 0.93 and 0.83 ->
 // 0.95, no cell of the synthetic crease set worse). From this noise angle on (about 9 % noise on a regular
-// grid) only isolated sharp edges count, none by kSharpEdgeAlwaysDeg: with it the 10 % roofs gained a
+// grid) only isolated sharp edges (and chamfers' lines: sharp_edges.h) count, none by kSharpEdgeAlwaysDeg: with it the 10 % roofs gained a
 // lone noisy edge of 50 deg, a 10-strip cylinder at 5 % its 36 deg strip lines, and smooth spheres and tori
 // at 20 % false creases. Isolated edges only, against the votes alone there: the CAD parts gain in 28
 // cells of 5-20 % noise and lose in one (ribs_coarse at 20 %, +-1-edge F1 0.28 -> 0.27; draft_boss_coarse
