@@ -119,7 +119,7 @@ std::vector<std::uint8_t> RidgeActions(const SurfaceGraph& g, const std::vector<
   for (int v = 0; v < n; ++v) {
     if (!IsFeature(res[v])) continue;
     const bool ridgeHere = ridge[v].F > 0;
-    const bool keep = sharp[v] || (ridgeHere && !OffFittedRidge(g, ridge, v) &&
+    const bool keep = sharp[v] || (ridgeHere && !ridge[v].rounded && !OffFittedRidge(g, ridge, v) &&
                                    !StrongerNeighbourAcross(g, v, lineOf(v), sharpScore, lineOf, kCosSameLine));
     if (!keep) action[v] = kDemote;
     else if (res[v].cls == VertexClass::Corner && OffRidge(g, res, v)) action[v] = kCornerToCrease;
@@ -155,7 +155,7 @@ std::vector<std::uint8_t> CornersWhereRidgesMeet(const SurfaceGraph& g, const st
 struct RidgeScratch {
   explicit RidgeScratch(const SurfaceGraph& g) : flood(g) {}
   BallFlood flood;
-  std::vector<Eigen::Vector3d> xyz;
+  std::vector<Eigen::Vector3d> xyz, bestXyz;  // the ball in a frame; in the stronger fit's
 };
 
 // True when Eq. 10 with epsilon = eta = `epsilon` calls r a feature (pass 1's eigenvalues, in
@@ -187,7 +187,7 @@ RidgeFitResult StrongerRidgeFit(const SurfaceGraph& g, const VertexResult& r, in
       sc.xyz.emplace_back(F.e1.dot(d), F.e2.dot(d), F.n.dot(d));
     }
     const RidgeFitResult f = FitRidge(F, sc.xyz, floorRss * double(sc.xyz.size()));
-    if (f.ok && (!fit.ok || f.F > fit.F)) fit = f;
+    if (f.ok && (!fit.ok || f.F > fit.F)) fit = f, sc.bestXyz.swap(sc.xyz);
   }
   return fit;
 }
@@ -214,6 +214,7 @@ PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res,
   const double confirmEpsilon = EpsilonFromAngle(tuning::kRidgeConfirmAngleDeg);
   const double confirmSigma = std::max(s.noiseSigma, tuning::kRidgeConfirmFloorEdges * g.meanEdge);
   const double confirmMeanSquare = tuning::kRidgeConfirmNoise * tuning::kRidgeConfirmNoise * confirmSigma * confirmSigma;
+  const double roundedGain = tuning::kRoundedRidgeGain * confirmSigma * confirmSigma;
   const double ridgeRadius =
       std::min(std::max(s.radius, tuning::kRidgeRadiusMin * g.meanEdge), tuning::kRidgeRadiusMax * g.meanEdge);
   return ParallelOverVertices<RidgeScratch>(g, threads, progress, [&](int v, RidgeScratch& sc) {
@@ -228,6 +229,10 @@ PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res,
     ridge[v].F = float(fit.F);
     ridge[v].alphaRad = float(fit.alphaRad);
     for (int j = 0; j < 3; ++j) ridge[v].tangent[j] = float(fit.tangent[j]);
+    // A fillet narrower than the ball votes like a crease; its heights fit a round profile by many
+    // times the noise's variance better. It still suppresses its band's weaker rows (RidgeActions),
+    // and is demoted itself.
+    ridge[v].rounded = RoundedRidgeGain(sc.bestXyz, fit.lineInFrame, g.meanEdge) > roundedGain;
   });
 }
 

@@ -44,6 +44,7 @@ struct RidgeScore {
   float F = 0;                                // the kink's F statistic; 0: not a ridge of angle >= phi
   std::array<float, 3> tangent{{0, 0, 0}};   // the fitted ridge line
   float alphaRad = 0;
+  bool rounded = false;  // the heights fit a rounded profile far better (RoundedRidgeGain): a fillet
 };
 
 // Makes feature vertex v a SURFACE vertex whose normal restarts from its one-ring's (off the

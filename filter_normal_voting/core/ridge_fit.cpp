@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tuning.h"
+
 namespace nvv {
 
 namespace {
@@ -18,23 +20,32 @@ RidgeBasis RidgeBasisAt(const Eigen::Vector3d& q) {
   return u;
 }
 
-// Moments of the samples: P = sum [u; z][u; z]' once, the |w| column's per direction.
+// Moments of the samples: P = sum [u; z][u; z]' once, a profile's column per profile.
 struct RidgeMoments {
   typedef Eigen::Matrix<double, kRidgeBasis + 1, kRidgeBasis + 1> Full;
+  typedef Eigen::Matrix<double, kRidgeBasis + 1, 1> Column;
   Full P = Full::Zero();
-  const std::vector<Eigen::Vector3d>* xyz = nullptr;
+  const std::vector<Eigen::Vector3d>& xyz;
 
-  // RSS_1 at direction theta (-1 if singular); the coefficients in `beta` (kink last).
-  double Residual(double theta, Eigen::Matrix<double, kRidgeBasis + 1, 1>* beta) const {
-    const double c = std::cos(theta), s = std::sin(theta);
+  explicit RidgeMoments(const std::vector<Eigen::Vector3d>& samples) : xyz(samples) {
+    for (const Eigen::Vector3d& q : xyz) {
+      Column u;
+      u << RidgeBasisAt(q), q.z();
+      P.noalias() += u * u.transpose();
+    }
+  }
+
+  // RSS of z = sheet + b profile(q) (-1 if singular); the coefficients in `beta` (b last).
+  template <class Profile>
+  double ResidualOf(Profile profile, Column* beta) const {
     Full A;
-    Eigen::Matrix<double, kRidgeBasis + 1, 1> r;
+    Column r;
     A.topLeftCorner<kRidgeBasis, kRidgeBasis>() = P.topLeftCorner<kRidgeBasis, kRidgeBasis>();
     r.head<kRidgeBasis>() = P.block<kRidgeBasis, 1>(0, kRidgeBasis);
     RidgeBasis su = RidgeBasis::Zero();
     double sww = 0, szw = 0;
-    for (const Eigen::Vector3d& q : *xyz) {
-      const double w = std::abs(-q.x() * s + q.y() * c);
+    for (const Eigen::Vector3d& q : xyz) {
+      const double w = profile(q);
       su += w * RidgeBasisAt(q);
       sww += w * w;
       szw += q.z() * w;
@@ -45,10 +56,16 @@ struct RidgeMoments {
     r(kRidgeBasis) = szw;
     Eigen::LDLT<Full> ldlt(A);
     if (ldlt.info() != Eigen::Success) return -1;
-    const Eigen::Matrix<double, kRidgeBasis + 1, 1> b = ldlt.solve(r);
+    const Column b = ldlt.solve(r);
     if (!b.allFinite()) return -1;
     if (beta) *beta = b;
     return std::max(0.0, P(kRidgeBasis, kRidgeBasis) - b.dot(r));  // an exact fit may round below 0
+  }
+
+  // The ridge's RSS_1 at direction theta: the profile |w|.
+  double Residual(double theta, Column* beta) const {
+    const double c = std::cos(theta), s = std::sin(theta);
+    return ResidualOf([c, s](const Eigen::Vector3d& q) { return std::abs(-q.x() * s + q.y() * c); }, beta);
   }
 };
 
@@ -58,13 +75,7 @@ RidgeFitResult FitRidge(const TangentFrame& F, const std::vector<Eigen::Vector3d
   RidgeFitResult out;
   const int n = int(xyz.size());
   if (n < 2 * (kRidgeBasis + 1)) return out;
-  RidgeMoments m;
-  m.xyz = &xyz;
-  for (const Eigen::Vector3d& q : xyz) {
-    Eigen::Matrix<double, kRidgeBasis + 1, 1> u;
-    u << RidgeBasisAt(q), q.z();
-    m.P.noalias() += u * u.transpose();
-  }
+  const RidgeMoments m(xyz);
   Eigen::LDLT<Eigen::Matrix<double, kRidgeBasis, kRidgeBasis>> sheet(m.P.topLeftCorner<kRidgeBasis, kRidgeBasis>());
   if (sheet.info() != Eigen::Success) return out;
   const RidgeBasis rz = m.P.block<kRidgeBasis, 1>(0, kRidgeBasis);
@@ -105,9 +116,32 @@ RidgeFitResult FitRidge(const TangentFrame& F, const std::vector<Eigen::Vector3d
   }
   out.F = (n - kRidgeBasis - 1) * std::max(0.0, across0 - across1) / std::max(across1, floorRss);
   out.meanSquareAcross = across1 / (n - kRidgeBasis - 1);
-  out.tangent = F.FromPlane(Eigen::Vector2d(c, s));
+  out.lineInFrame = Eigen::Vector2d(c, s);
+  out.tangent = F.FromPlane(out.lineInFrame);
   out.ok = std::isfinite(out.F) && std::isfinite(out.alphaRad);
   return out;
+}
+
+double RoundedRidgeGain(const std::vector<Eigen::Vector3d>& xyz, const Eigen::Vector2d& lineInFrame, double meanEdge) {
+  const RidgeMoments m(xyz);
+  auto across = [&](const Eigen::Vector3d& q) { return -q.x() * lineInFrame.y() + q.y() * lineInFrame.x(); };
+  double sharp = -1, round = -1;
+  int roundAt = 0;
+  for (int i = -tuning::kRoundedRidgeOffsetSteps; i <= tuning::kRoundedRidgeOffsetSteps; ++i) {
+    const double w0 = i * tuning::kRoundedRidgeOffsetStep * meanEdge;
+    const double rs = m.ResidualOf([&](const Eigen::Vector3d& q) { return std::abs(across(q) - w0); }, nullptr);
+    if (rs >= 0 && (sharp < 0 || rs < sharp)) sharp = rs;
+    for (double radius : tuning::kRoundedRidgeRadii) {
+      const double rho2 = radius * radius * meanEdge * meanEdge;
+      const double rr = m.ResidualOf(
+          [&](const Eigen::Vector3d& q) { return std::sqrt((across(q) - w0) * (across(q) - w0) + rho2); }, nullptr);
+      if (rr >= 0 && (round < 0 || rr < round)) round = rr, roundAt = i;
+    }
+  }
+  // A round best put at the grid's end lies beyond the fillet this line could be: another feature in
+  // the ball (a coarse export's hole), not this ridge's profile.
+  if (std::abs(roundAt) == tuning::kRoundedRidgeOffsetSteps) return 0;
+  return sharp >= 0 && round >= 0 ? sharp - round : 0;
 }
 
 }  // namespace nvv

@@ -40,11 +40,21 @@ struct RidgeFitResult {
   double alphaRad = 0;         // angle between the two fitted sheets' normals
   double meanSquareAcross = 0; // R_1 / (N - 4): what is left across the two sheets, per degree of freedom
   Eigen::Vector3d tangent = Eigen::Vector3d::Zero();  // the fitted ridge line's direction
+  Eigen::Vector2d lineInFrame = Eigen::Vector2d::Zero();  // the same, (e1, e2) of the fit's frame
 };
 
 // `xyz`: the neighbours (v itself included) in the frame F, i.e. (e1.d, e2.d, n.d) of d = q - v.
 // `floorRss`: the smallest residual that counts (a clean mesh's exact fits give ~0).
 RidgeFitResult FitRidge(const TangentFrame& F, const std::vector<Eigen::Vector3d>& xyz, double floorRss);
+
+// How much better the heights fit a rounded ridge than a sharp one along the same line: the
+// residual sum of squares of the best kink z = h + p x + q y + b |w - w0| minus that of the best
+// round z = h + p x + q y + b sqrt((w - w0)^2 + rho^2), w the signed distance across the line
+// `lineInFrame` (a FitRidge result's), w0 and rho searched on grids in units of `meanEdge`
+// (tuning.h). A crease between two planes fits the kink to the noise; a fillet narrower than the
+// ball, which votes like a crease, fits the round by many times the noise's variance. 0 where the
+// best round lies at the offset grid's end (another feature of the ball).
+double RoundedRidgeGain(const std::vector<Eigen::Vector3d>& xyz, const Eigen::Vector2d& lineInFrame, double meanEdge);
 
 }  // namespace nvv
 
