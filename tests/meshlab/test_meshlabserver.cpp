@@ -408,7 +408,9 @@ TEST(MeshLabServer, RemeshingRecipeKeepsTheCreasesAndRemeshesTheRest) {
     if (noise == 20) continue;  // the lines break up at 15 deg: a wide band is kept (printed, not claimed)
     EXPECT_LT(recipe.faces, noisy.face.size() / 2) << "most of the mesh remeshed";
     EXPECT_GT(alone30.p95, 1.3 * recipe.p95) << "MeshLab's default rounds the shallow creases";
-    if (noise == 10) EXPECT_GT(alone15.faces, recipe.faces * 13 / 10) << "noise taken for features";
+    if (noise == 10) {
+      EXPECT_GT(alone15.faces, recipe.faces * 13 / 10) << "noise taken for features";
+    }
   }
 }
 
