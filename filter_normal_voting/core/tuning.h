@@ -148,7 +148,8 @@ constexpr double kRefinedEdgeRatio = 3.0;
 // 40-130, the true creases' at most 35 but for a few on block's 2 mm chamfer); judged on the CAD
 // parts (done-when cells failing 17 -> 13, three noise draws each at 5 / 10 / 20 %: mean +-1-edge F1
 // 0.955 -> 0.967, 0.867 -> 0.898, 0.805 -> 0.820), the synthetic crease set (unchanged) and fandisk and
-// the ABC model (held out: better at 10 %). 80 fixed no cell; 25 lost block_default's chamfer.
+// the ABC model (held out: better at 10 %). 80 fixed no cell; 25 lost more of block_default's chamfer
+// (measured while a demoted ridge still let its band's next row win).
 constexpr double kRoundedRidgeGain = 40.0;
 // The rounded-ridge test's grids: the line's offset across itself in steps of this many l_ave up to
 // that many steps each way, and the round's radius rho in l_ave (a fillet of turn a and radius r
