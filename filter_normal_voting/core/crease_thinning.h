@@ -11,7 +11,9 @@
 //    its neighbours' heights (ridge_fit.h, ScoreRidges); a vertex stays a crease where that fit
 //    finds a kink of at least the crease angle phi, no neighbour across its fitted line has a
 //    larger kink F statistic, and no sharp mesh edge lies clearly across it. Where the faces'
-//    normals scatter by more than phi under noise, the heights still show the kink.
+//    normals scatter by more than phi under noise, the heights still show the kink. A ridge whose
+//    heights fit a round profile far better than the kink (RoundedRidgeGain: a fillet narrower
+//    than the ball) is demoted too, while its F still suppresses the weaker rows of its band.
 //  - the strength form (ThinCreaseBand): suppression on Eq. 7's feature strength
 //    lambda_2 + lambda_3, which peaks where the two sheets' votes balance, i.e. on the crease.
 // Both keep a crease vertex that lies on two sharp mesh edges along its own crease
