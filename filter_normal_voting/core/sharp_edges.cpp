@@ -72,6 +72,28 @@ constexpr double kEquilateralHeight = 0.87;
 
 int ThirdVertex(const std::array<int, 3>& t, int a, int b) { return t[0] + t[1] + t[2] - a - b; }
 
+// Calls visit(f, o, x, c, d) once for every pair of faces f = (v, x, c) < o = (x, v, d) of positive
+// area across an edge (v, x) of v (f repeated with the other orientation, d == c, is no pair); stops
+// at the first visit that returns true, and returns whether one did.
+template <class Visit>
+bool ForEachEdgeFacePair(const SurfaceGraph& g, int v, Visit visit) {
+  bool stop = false;
+  for (int i = g.FaceBegin(v); i < g.FaceEnd(v) && !stop; ++i) {
+    const int f = g.vfList[i];
+    if (!(g.faceArea[f] > 0)) continue;
+    for (int x : g.face[f]) {
+      if (x == v || stop) continue;
+      const int c = ThirdVertex(g.face[f], v, x);
+      g.ForEachFaceAcross(f, v, x, [&](int o) {  // each face pair once, from its lower face
+        if (stop || o < f || !(g.faceArea[o] > 0)) return;
+        const int d = ThirdVertex(g.face[o], v, x);
+        if (d != c) stop = visit(f, o, x, c, d);
+      });
+    }
+  }
+  return stop;
+}
+
 // How much the surface turns at the other edges of face h = (a, b, c) (its edges through c), below
 // `below` (an edge that sharp is a crease of its own, as a chamfer's other side). Beside a crease
 // between two sheets the faces' other edges lie in their sheets; on a coarse, irregular
@@ -151,21 +173,10 @@ bool IsSharpEdge(const SurfaceGraph& g, int f, int o, int v, int x, int c, int d
 bool ContinuedBySharpEdge(const SurfaceGraph& g, int q, int p, const Eigen::Vector3d& e, const Thresholds& t) {
   Thresholds single = t;
   single.chamferChain = false;
-  bool found = false;
-  for (int i = g.FaceBegin(p); i < g.FaceEnd(p) && !found; ++i) {
-    const int h = g.vfList[i];
-    if (!(g.faceArea[h] > 0)) continue;
-    for (int y : g.face[h]) {
-      if (y == p || y == q || (g.pos[y] - g.pos[p]).normalized().dot(e) < tuning::kCosSameLine) continue;
-      g.ForEachFaceAcross(h, p, y, [&](int o) {
-        if (found || o < h || !(g.faceArea[o] > 0)) return;
-        const int c = ThirdVertex(g.face[h], p, y), d = ThirdVertex(g.face[o], p, y);
-        if (c == d) return;
-        found = IsSharpEdge(g, h, o, p, y, c, d, EdgeAngle(g, h, o, p, y), single);
-      });
-    }
-  }
-  return found;
+  return ForEachEdgeFacePair(g, p, [&](int h, int o, int y, int c, int d) {
+    if (y == q || (g.pos[y] - g.pos[p]).normalized().dot(e) < tuning::kCosSameLine) return false;
+    return IsSharpEdge(g, h, o, p, y, c, d, EdgeAngle(g, h, o, p, y), single);
+  });
 }
 
 SharpVerdict JudgeVertex(const SurfaceGraph& g, int v, const Thresholds& t) {
@@ -175,29 +186,19 @@ SharpVerdict JudgeVertex(const SurfaceGraph& g, int v, const Thresholds& t) {
   double cusp = 0;
   int count = 0;
   bool corner = false;
-  for (int i = g.FaceBegin(v); i < g.FaceEnd(v); ++i) {
-    const int f = g.vfList[i];
-    if (!(g.faceArea[f] > 0)) continue;
-    for (int x : g.face[f]) {
-      if (x == v) continue;
-      const int c = ThirdVertex(g.face[f], v, x);
-      g.ForEachFaceAcross(f, v, x, [&](int o) {  // each face pair once, from its lower face
-        if (o < f || !(g.faceArea[o] > 0)) return;
-        const int d = ThirdVertex(g.face[o], v, x);
-        if (d == c) return;  // f repeated with the other orientation
-        const double theta = EdgeAngle(g, f, o, v, x);
-        if (!IsSharpEdge(g, f, o, v, x, c, d, theta, t)) return;
-        Eigen::Vector3d dir = (g.pos[x] - g.pos[v]).normalized();
-        if (count == 0) firstDir = dir;
-        else if (std::abs(dir.dot(firstDir)) < tuning::kCosSameLine) corner = true;
-        if (dir.dot(firstDir) < 0) dir = -dir;
-        tangent += dir;
-        normal += g.faceNormal[f] + NormalOrientedLike(g, f, o, v, x);
-        cusp += theta;
-        ++count;
-      });
-    }
-  }
+  ForEachEdgeFacePair(g, v, [&](int f, int o, int x, int c, int d) {
+    const double theta = EdgeAngle(g, f, o, v, x);
+    if (!IsSharpEdge(g, f, o, v, x, c, d, theta, t)) return false;
+    Eigen::Vector3d dir = (g.pos[x] - g.pos[v]).normalized();
+    if (count == 0) firstDir = dir;
+    else if (std::abs(dir.dot(firstDir)) < tuning::kCosSameLine) corner = true;
+    if (dir.dot(firstDir) < 0) dir = -dir;
+    tangent += dir;
+    normal += g.faceNormal[f] + NormalOrientedLike(g, f, o, v, x);
+    cusp += theta;
+    ++count;
+    return false;
+  });
   if (count == 0) return out;
   if (corner || count > 2) {
     out.cls = std::uint8_t(VertexClass::Corner);
