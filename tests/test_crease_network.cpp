@@ -86,8 +86,8 @@ TEST(CreaseNetwork, ACappedCylinderHasTwoClosedLinesAndThreePatches) {
 // A crease that runs off the mesh (a roof, an open scan) ends at the border, not at a gap: under
 // noise the last vertices before the border may vote like one sheet, and the line must still reach
 // the border for the two sheets to be two patches. 60 and 90 deg roofs, 10 and 20 % noise, 8 seeds
-// each: two patches in 31 of 32 runs (25 when lines are continued to other lines only; the one left
-// has a gap in the middle of its line that is not closed, at 20 %).
+// each: two patches in 32 of 32 runs (25 when lines are continued to other lines only, 31 when the
+// patches flood through a gap in the middle of a line that gap closing cannot bridge, at 20 %).
 TEST(CreaseNetwork, ARoofUnderNoiseRunsToTheBorderAndSplitsTwoPatches) {
   int twoPatches = 0, runs = 0;
   for (double alpha : {60.0, 90.0})
@@ -106,4 +106,41 @@ TEST(CreaseNetwork, ARoofUnderNoiseRunsToTheBorderAndSplitsTwoPatches) {
       }
   std::printf("[roofs, 10 and 20 %% noise] two patches in %d of %d runs\n", twoPatches, runs);
   EXPECT_GE(twoPatches, runs - 1);
+}
+
+// Under noise a crease line can keep a gap wider than gap closing reaches; the two patches it
+// bounds must not become one through it. A noisy cube (10 %) whose edge x = y = 5 has lost its
+// crease class over 5 units (10 edges, beyond 2 g_m = 3): still 6 patches, the faces on either
+// side of the gap in two of them. (A plain flood across the gap gives 5.)
+TEST(CreaseNetwork, AGapTooWideToCloseStillSplitsItsTwoPatches) {
+  TMesh m;
+  nvv_shapes::Cube(m, 5.0, 21);
+  NoiseAlongNormals(m, 0.1 * 0.5, 7);  // l_ave = 0.5
+  Network n;
+  n.run = RunNvv(m, WithK(3));
+  nvv::BuildSurfaceGraph(m, n.g, 1);
+  auto nearEdge = [&](const Eigen::Vector3d& p, double halfGap) {
+    return std::abs(p.x() - 5) < 0.3 && std::abs(p.y() - 5) < 0.3 && std::abs(p.z()) < halfGap;
+  };
+  int cleared = 0;
+  for (int v = 0; v < n.g.VertexCount(); ++v)
+    if (nearEdge(n.g.pos[v], 2.4) && n.run.res[v].cls != nvv::VertexClass::Surface) {
+      n.run.res[v].cls = nvv::VertexClass::Surface;
+      ++cleared;
+    }
+  ASSERT_GE(cleared, 9);
+  n.net = nvv::FindCreaseNetwork(n.g, n.run.res, n.run.sum.radius, 60.0);
+  EXPECT_EQ(6, n.net.patchCount);
+  // The faces at the gap's middle: those on the side x = 5 against those on the side y = 5.
+  std::set<int> sideX, sideY;
+  for (int f = 0; f < n.g.FaceCount(); ++f) {
+    const auto& t = n.g.face[f];
+    const Eigen::Vector3d c = (n.g.pos[t[0]] + n.g.pos[t[1]] + n.g.pos[t[2]]) / 3.0;
+    if (std::abs(c.z()) > 1.0) continue;
+    if (std::abs(c.x() - 5) < 0.1 && c.y() > 3.5) sideX.insert(n.net.facePatch[f]);
+    if (std::abs(c.y() - 5) < 0.1 && c.x() > 3.5) sideY.insert(n.net.facePatch[f]);
+  }
+  ASSERT_EQ(1u, sideX.size());
+  ASSERT_EQ(1u, sideY.size());
+  EXPECT_NE(*sideX.begin(), *sideY.begin());
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <queue>
 #include <utility>
@@ -223,22 +224,120 @@ int Find(std::vector<int>& up, int x) {
   return x;
 }
 
-// Faces joined across every edge of two faces that is not a crease edge; patches smaller than
-// minFaces merged into the neighbour they share most crease edges with.
-void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, int minFaces, CreaseNetwork& net) {
+// How far each face's centroid is from the nearest of the source faces, walking centroid to
+// centroid across the links (Dijkstra); +inf where none is reached.
+std::vector<double> FaceDistance(const SurfaceGraph& g, const std::vector<std::array<int, 3>>& links,
+                                 const std::vector<int>& sources) {
+  const int nf = g.FaceCount();
+  std::vector<double> dist(nf, std::numeric_limits<double>::infinity());
+  std::vector<int> start(std::size_t(nf) + 1, 0), next(2 * links.size());
+  for (const auto& l : links) ++start[l[0] + 1], ++start[l[1] + 1];
+  for (int f = 0; f < nf; ++f) start[f + 1] += start[f];
+  {
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (const auto& l : links) next[fill[l[0]]++] = l[1], next[fill[l[1]]++] = l[0];
+  }
+  auto centroid = [&](int f) { return (g.pos[g.face[f][0]] + g.pos[g.face[f][1]] + g.pos[g.face[f][2]]) / 3.0; };
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+  for (int f : sources)
+    if (dist[f] > 0) dist[f] = 0, heap.push({0.0, f});
+  while (!heap.empty()) {
+    const double d = heap.top().first;
+    const int f = heap.top().second;
+    heap.pop();
+    if (d > dist[f]) continue;
+    const Eigen::Vector3d cf = centroid(f);
+    for (int i = start[f]; i < start[f + 1]; ++i) {
+      const int o = next[i];
+      const double nd = d + (centroid(o) - cf).norm();
+      if (nd < dist[o]) dist[o] = nd, heap.push({nd, o});
+    }
+  }
+  return dist;
+}
+
+// Faces grouped into patches bounded by the crease edges. On a noisy mesh a crease line can keep a
+// gap of a few edges that gap closing could not bridge, and a plain flood across every non-crease
+// edge then runs through it and makes two sheets one patch. So the faces join in a priority flood
+// from the farthest from any crease inwards (a watershed of the distance to the crease edges): a
+// face joins the patch of a neighbour across a non-crease edge, and where it touches two patches it
+// joins them only if the neck it stands in is at least tuning::kPatchNeckRatio times as wide as the
+// smaller patch (its distance against that patch's largest one). On a clean mesh every face joins
+// every neighbour across a non-crease edge. Patches smaller than minFaces are then merged into the
+// neighbour they share the longest border with.
+void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, int minFaces, bool watershed,
+                 CreaseNetwork& net) {
   const int nf = g.FaceCount();
   std::vector<int> up(nf);
   std::iota(up.begin(), up.end(), 0);
   auto isCrease = [&](int a, int b) { return std::binary_search(edges.begin(), edges.end(), Key(a, b)); };
-  std::vector<std::array<int, 2>> creasePairs;  // the faces on either side of each crease edge
-  ForEachInteriorEdge(g, [&](int a, int b, int f, int o) {
-    if (isCrease(a, b)) creasePairs.push_back({{f, o}});
-    else up[Find(up, o)] = Find(up, f);
-  });
+  std::vector<std::array<int, 3>> links;  // faces f < o across an interior edge, and whether it is a crease edge
+  ForEachInteriorEdge(g, [&](int a, int b, int f, int o) { links.push_back({{f, o, isCrease(a, b) ? 1 : 0}}); });
+  // The faces around the lines' free ends (a gap's two sides); without one no line has a gap.
+  std::vector<int> ends;
+  if (watershed) {
+    const Incidence inc(g.VertexCount(), edges);
+    for (int v = 0; v < g.VertexCount(); ++v)
+      if (inc.Degree(v) == 1 && !g.OnBorder(v))
+        for (int i = g.FaceBegin(v); i < g.FaceEnd(v); ++i) ends.push_back(g.vfList[i]);
+  }
+  if (ends.empty()) {
+    for (const auto& l : links)
+      if (!l[2]) up[Find(up, l[1])] = Find(up, l[0]);
+  } else {
+    std::vector<int> sides;
+    for (const auto& l : links)
+      if (l[2]) sides.push_back(l[0]), sides.push_back(l[1]);
+    const std::vector<double> dist = FaceDistance(g, links, sides);
+    const std::vector<double> endDist = FaceDistance(g, links, ends);
+    // A neck is a gap when a line's free end is about as near as the crease edges are.
+    auto AtALineEnd = [&](int f) {
+      return endDist[f] <= tuning::kPatchGapEndDistance * dist[f] + tuning::kPatchGapEndSlackEdges * g.meanEdge;
+    };
+    std::vector<int> order(nf), start(std::size_t(nf) + 1, 0), next;
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int x, int y) { return dist[x] != dist[y] ? dist[x] > dist[y] : x < y; });
+    for (const auto& l : links)
+      if (!l[2]) ++start[l[0] + 1], ++start[l[1] + 1];
+    for (int f = 0; f < nf; ++f) start[f + 1] += start[f];
+    next.resize(start[nf]);
+    {
+      std::vector<int> fill(start.begin(), start.end() - 1);
+      for (const auto& l : links)
+        if (!l[2]) next[fill[l[0]]++] = l[1], next[fill[l[1]]++] = l[0];
+    }
+    std::vector<double> peak(nf, 0);  // per root: the patch's largest distance
+    std::vector<char> done(nf, 0);
+    std::vector<int> roots;
+    for (int f : order) {
+      done[f] = 1;
+      peak[f] = dist[f];
+      roots.clear();
+      for (int i = start[f]; i < start[f + 1]; ++i)
+        if (done[next[i]]) roots.push_back(Find(up, next[i]));
+      if (roots.empty()) continue;
+      // The deepest patch first (ties by root), then every other one it may join.
+      std::sort(roots.begin(), roots.end(), [&](int x, int y) { return peak[x] != peak[y] ? peak[x] > peak[y] : x < y; });
+      roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
+      const int main = roots[0];
+      up[f] = main;
+      for (std::size_t i = 1; i < roots.size(); ++i) {
+        const int r = Find(up, roots[i]), m = Find(up, main);
+        if (r == m || (AtALineEnd(f) && dist[f] < tuning::kPatchNeckRatio * std::min(peak[r], peak[m]))) continue;
+        up[r] = m;
+        peak[m] = std::max(peak[m], peak[r]);
+      }
+    }
+  }
   std::vector<int> size(nf, 0);
   for (int f = 0; f < nf; ++f) ++size[Find(up, f)];
-  // The crease pairs of each patch as first grown (CSR by root), so merging costs what the
-  // small patches' borders hold, not their number times every crease edge.
+  // The faces on either side of each patch border (crease edges, and the necks the watershed kept),
+  // per patch as first grown (CSR by root), so merging costs what the small patches' borders hold,
+  // not their number times every border edge.
+  std::vector<std::array<int, 2>> creasePairs;
+  for (const auto& l : links)
+    if (Find(up, l[0]) != Find(up, l[1])) creasePairs.push_back({{l[0], l[1]}});
   std::vector<int> pairStart(std::size_t(nf) + 1, 0), pairList(2 * creasePairs.size());
   for (const auto& fo : creasePairs) ++pairStart[Find(up, fo[0]) + 1], ++pairStart[Find(up, fo[1]) + 1];
   for (int f = 0; f < nf; ++f) pairStart[f + 1] += pairStart[f];
@@ -324,7 +423,7 @@ CreaseNetwork FindCreaseNetwork(const SurfaceGraph& g, const std::vector<VertexR
   }
   net.spurEdges = DropSpurs(g, res, net.edges, net.edgeCuspAngle, net.lines, net.edgeLine, radius);
   if (net.spurEdges > 0) net.lines = TraceLines(g, res, net.edges, net.edgeCuspAngle, net.edgeLine);
-  GrowPatches(g, net.edges, cleanMesh ? 1 : tuning::kMinPatchFaces, net);
+  GrowPatches(g, net.edges, cleanMesh ? 1 : tuning::kMinPatchFaces, !cleanMesh, net);
   return net;
 }
 

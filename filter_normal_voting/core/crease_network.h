@@ -14,9 +14,12 @@
 //  3. Spurs (DropSpurs): lines shorter than g_m that still stop at a crease vertex are dropped.
 //  4. Lines (TraceLines): crease edges linked into polylines that end at corners, at the
 //     border, at junctions of three or more lines, or close on themselves.
-//  5. Patches (GrowPatches): faces joined across every non-crease edge; where the votes decided,
-//     patches of fewer than tuning::kMinPatchFaces faces (noise between crease edges) are merged
-//     into the neighbour they share most crease edges with. On a clean mesh, whose classes came
+//  5. Patches (GrowPatches): faces joined across every non-crease edge. Where the votes decided,
+//     a gap left in a line must not join the two patches it separates: the faces join from the
+//     farthest from any crease edge inwards (a watershed), and two patches that meet at a neck
+//     next to a line's free end, narrower than tuning::kPatchNeckRatio times the smaller patch's
+//     widest point, stay two. Patches of fewer than tuning::kMinPatchFaces faces (noise between
+//     crease edges) are then merged into the neighbour they share the longest border with. On a clean mesh, whose classes came
 //     from its sharp edges (sharp_edges.h), none is: an exporter's chamfer strip or countersink
 //     facet is one or two faces between sharp edges, and a face of the model all the same.
 #ifndef NVV_CORE_CREASE_NETWORK_H
