@@ -224,19 +224,29 @@ int Find(std::vector<int>& up, int x) {
   return x;
 }
 
+// Two faces across an interior edge (f < o), and whether that edge is a crease edge.
+using FaceLink = std::array<int, 3>;
+
+// The faces next to each face across the links that pass `keep`, CSR.
+struct FaceNeighbours {
+  std::vector<int> start, face;
+  template <class Keep>
+  FaceNeighbours(int nf, const std::vector<FaceLink>& links, Keep keep) : start(std::size_t(nf) + 1, 0) {
+    for (const auto& l : links)
+      if (keep(l)) ++start[l[0] + 1], ++start[l[1] + 1];
+    for (int f = 0; f < nf; ++f) start[f + 1] += start[f];
+    face.resize(start[nf]);
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (const auto& l : links)
+      if (keep(l)) face[fill[l[0]]++] = l[1], face[fill[l[1]]++] = l[0];
+  }
+};
+
 // How far each face's centroid is from the nearest of the source faces, walking centroid to
-// centroid across the links (Dijkstra); +inf where none is reached.
-std::vector<double> FaceDistance(const SurfaceGraph& g, const std::vector<std::array<int, 3>>& links,
-                                 const std::vector<int>& sources) {
+// centroid between neighbours (Dijkstra); +inf where none is reached.
+std::vector<double> FaceDistance(const SurfaceGraph& g, const FaceNeighbours& next, const std::vector<int>& sources) {
   const int nf = g.FaceCount();
   std::vector<double> dist(nf, std::numeric_limits<double>::infinity());
-  std::vector<int> start(std::size_t(nf) + 1, 0), next(2 * links.size());
-  for (const auto& l : links) ++start[l[0] + 1], ++start[l[1] + 1];
-  for (int f = 0; f < nf; ++f) start[f + 1] += start[f];
-  {
-    std::vector<int> fill(start.begin(), start.end() - 1);
-    for (const auto& l : links) next[fill[l[0]]++] = l[1], next[fill[l[1]]++] = l[0];
-  }
   auto centroid = [&](int f) { return (g.pos[g.face[f][0]] + g.pos[g.face[f][1]] + g.pos[g.face[f][2]]) / 3.0; };
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
@@ -248,8 +258,8 @@ std::vector<double> FaceDistance(const SurfaceGraph& g, const std::vector<std::a
     heap.pop();
     if (d > dist[f]) continue;
     const Eigen::Vector3d cf = centroid(f);
-    for (int i = start[f]; i < start[f + 1]; ++i) {
-      const int o = next[i];
+    for (int i = next.start[f]; i < next.start[f + 1]; ++i) {
+      const int o = next.face[i];
       const double nd = d + (centroid(o) - cf).norm();
       if (nd < dist[o]) dist[o] = nd, heap.push({nd, o});
     }
@@ -262,17 +272,18 @@ std::vector<double> FaceDistance(const SurfaceGraph& g, const std::vector<std::a
 // edge then runs through it and makes two sheets one patch. So the faces join in a priority flood
 // from the farthest from any crease inwards (a watershed of the distance to the crease edges): a
 // face joins the patch of a neighbour across a non-crease edge, and where it touches two patches it
-// joins them only if the neck it stands in is at least tuning::kPatchNeckRatio times as wide as the
-// smaller patch (its distance against that patch's largest one). On a clean mesh every face joins
-// every neighbour across a non-crease edge. Patches smaller than minFaces are then merged into the
-// neighbour they share the longest border with.
+// joins them too, unless it stands in a gap: a line's free end about as near as the crease edges
+// (AtALineEnd), and a neck narrower than tuning::kPatchNeckRatio times the smaller patch's widest
+// point (its distance to the creases against that patch's largest). On a clean mesh (watershed
+// false) every face joins every neighbour across a non-crease edge. Patches smaller than minFaces
+// are then merged into the neighbour they share the longest border with.
 void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, int minFaces, bool watershed,
                  CreaseNetwork& net) {
   const int nf = g.FaceCount();
   std::vector<int> up(nf);
   std::iota(up.begin(), up.end(), 0);
   auto isCrease = [&](int a, int b) { return std::binary_search(edges.begin(), edges.end(), Key(a, b)); };
-  std::vector<std::array<int, 3>> links;  // faces f < o across an interior edge, and whether it is a crease edge
+  std::vector<FaceLink> links;
   ForEachInteriorEdge(g, [&](int a, int b, int f, int o) { links.push_back({{f, o, isCrease(a, b) ? 1 : 0}}); });
   // The faces around the lines' free ends (a gap's two sides); without one no line has a gap.
   std::vector<int> ends;
@@ -289,24 +300,17 @@ void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, int minF
     std::vector<int> sides;
     for (const auto& l : links)
       if (l[2]) sides.push_back(l[0]), sides.push_back(l[1]);
-    const std::vector<double> dist = FaceDistance(g, links, sides);
-    const std::vector<double> endDist = FaceDistance(g, links, ends);
+    const FaceNeighbours acrossAny(nf, links, [](const FaceLink&) { return true; });
+    const std::vector<double> dist = FaceDistance(g, acrossAny, sides);
+    const std::vector<double> endDist = FaceDistance(g, acrossAny, ends);
     // A neck is a gap when a line's free end is about as near as the crease edges are.
     auto AtALineEnd = [&](int f) {
       return endDist[f] <= tuning::kPatchGapEndDistance * dist[f] + tuning::kPatchGapEndSlackEdges * g.meanEdge;
     };
-    std::vector<int> order(nf), start(std::size_t(nf) + 1, 0), next;
+    std::vector<int> order(nf);
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](int x, int y) { return dist[x] != dist[y] ? dist[x] > dist[y] : x < y; });
-    for (const auto& l : links)
-      if (!l[2]) ++start[l[0] + 1], ++start[l[1] + 1];
-    for (int f = 0; f < nf; ++f) start[f + 1] += start[f];
-    next.resize(start[nf]);
-    {
-      std::vector<int> fill(start.begin(), start.end() - 1);
-      for (const auto& l : links)
-        if (!l[2]) next[fill[l[0]]++] = l[1], next[fill[l[1]]++] = l[0];
-    }
+    const FaceNeighbours across(nf, links, [](const FaceLink& l) { return !l[2]; });
     std::vector<double> peak(nf, 0);  // per root: the patch's largest distance
     std::vector<char> done(nf, 0);
     std::vector<int> roots;
@@ -314,16 +318,16 @@ void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, int minF
       done[f] = 1;
       peak[f] = dist[f];
       roots.clear();
-      for (int i = start[f]; i < start[f + 1]; ++i)
-        if (done[next[i]]) roots.push_back(Find(up, next[i]));
+      for (int i = across.start[f]; i < across.start[f + 1]; ++i)
+        if (done[across.face[i]]) roots.push_back(Find(up, across.face[i]));
       if (roots.empty()) continue;
       // The deepest patch first (ties by root), then every other one it may join.
       std::sort(roots.begin(), roots.end(), [&](int x, int y) { return peak[x] != peak[y] ? peak[x] > peak[y] : x < y; });
       roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
-      const int main = roots[0];
-      up[f] = main;
+      const int deepest = roots[0];
+      up[f] = deepest;
       for (std::size_t i = 1; i < roots.size(); ++i) {
-        const int r = Find(up, roots[i]), m = Find(up, main);
+        const int r = Find(up, roots[i]), m = Find(up, deepest);
         if (r == m || (AtALineEnd(f) && dist[f] < tuning::kPatchNeckRatio * std::min(peak[r], peak[m]))) continue;
         up[r] = m;
         peak[m] = std::max(peak[m], peak[r]);
