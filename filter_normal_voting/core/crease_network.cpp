@@ -244,10 +244,9 @@ struct FaceNeighbours {
 
 // How far each face's centroid is from the nearest of the source faces, walking centroid to
 // centroid between neighbours (Dijkstra); +inf where none is reached.
-std::vector<double> FaceDistance(const SurfaceGraph& g, const FaceNeighbours& next, const std::vector<int>& sources) {
-  const int nf = g.FaceCount();
-  std::vector<double> dist(nf, std::numeric_limits<double>::infinity());
-  auto centroid = [&](int f) { return (g.pos[g.face[f][0]] + g.pos[g.face[f][1]] + g.pos[g.face[f][2]]) / 3.0; };
+std::vector<double> FaceDistance(const std::vector<Eigen::Vector3d>& centroid, const FaceNeighbours& next,
+                                 const std::vector<int>& sources) {
+  std::vector<double> dist(centroid.size(), std::numeric_limits<double>::infinity());
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
   for (int f : sources)
@@ -257,10 +256,9 @@ std::vector<double> FaceDistance(const SurfaceGraph& g, const FaceNeighbours& ne
     const int f = heap.top().second;
     heap.pop();
     if (d > dist[f]) continue;
-    const Eigen::Vector3d cf = centroid(f);
     for (int i = next.start[f]; i < next.start[f + 1]; ++i) {
       const int o = next.face[i];
-      const double nd = d + (centroid(o) - cf).norm();
+      const double nd = d + (centroid[o] - centroid[f]).norm();
       if (nd < dist[o]) dist[o] = nd, heap.push({nd, o});
     }
   }
@@ -300,9 +298,11 @@ void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, int minF
     std::vector<int> sides;
     for (const auto& l : links)
       if (l[2]) sides.push_back(l[0]), sides.push_back(l[1]);
+    std::vector<Eigen::Vector3d> centroid(nf);
+    for (int f = 0; f < nf; ++f) centroid[f] = (g.pos[g.face[f][0]] + g.pos[g.face[f][1]] + g.pos[g.face[f][2]]) / 3.0;
     const FaceNeighbours acrossAny(nf, links, [](const FaceLink&) { return true; });
-    const std::vector<double> dist = FaceDistance(g, acrossAny, sides);
-    const std::vector<double> endDist = FaceDistance(g, acrossAny, ends);
+    const std::vector<double> dist = FaceDistance(centroid, acrossAny, sides);
+    const std::vector<double> endDist = FaceDistance(centroid, acrossAny, ends);
     // A neck is a gap when a line's free end is about as near as the crease edges are.
     auto AtALineEnd = [&](int f) {
       return endDist[f] <= tuning::kPatchGapEndDistance * dist[f] + tuning::kPatchGapEndSlackEdges * g.meanEdge;

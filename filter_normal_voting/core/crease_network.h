@@ -19,9 +19,10 @@
 //     farthest from any crease edge inwards (a watershed), and two patches that meet at a neck
 //     next to a line's free end, narrower than tuning::kPatchNeckRatio times the smaller patch's
 //     widest point, stay two. Patches of fewer than tuning::kMinPatchFaces faces (noise between
-//     crease edges) are then merged into the neighbour they share the longest border with. On a clean mesh, whose classes came
-//     from its sharp edges (sharp_edges.h), none is: an exporter's chamfer strip or countersink
-//     facet is one or two faces between sharp edges, and a face of the model all the same.
+//     crease edges) are then merged into the neighbour they share the longest border with. On a
+//     clean mesh, whose classes came from its sharp edges (sharp_edges.h), neither is done: an
+//     exporter's chamfer strip or countersink facet is one or two faces between sharp edges, and
+//     a face of the model all the same.
 #ifndef NVV_CORE_CREASE_NETWORK_H
 #define NVV_CORE_CREASE_NETWORK_H
 

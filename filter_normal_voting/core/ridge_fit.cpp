@@ -133,8 +133,10 @@ double RoundedRidgeGain(const std::vector<Eigen::Vector3d>& xyz, const Eigen::Ve
     if (rs >= 0 && (sharp < 0 || rs < sharp)) sharp = rs;
     for (double radius : tuning::kRoundedRidgeRadii) {
       const double rho2 = radius * radius * meanEdge * meanEdge;
-      const double rr = m.ResidualOf(
-          [&](const Eigen::Vector3d& q) { return std::sqrt((across(q) - w0) * (across(q) - w0) + rho2); }, nullptr);
+      const double rr = m.ResidualOf([&](const Eigen::Vector3d& q) {
+        const double w = across(q) - w0;
+        return std::sqrt(w * w + rho2);
+      }, nullptr);
       if (rr >= 0 && (round < 0 || rr < round)) round = rr, roundAt = i;
     }
   }

@@ -51,7 +51,7 @@ constexpr double kCreaseEdgeMinLean = 0.5;
 // facets of the clean export block's hole split its 5 patches into 8.
 constexpr double kCornerPairEdgeMinAngleDeg = 60.0;
 // Patches of fewer faces than this (about a vertex's fan) are noise between crease edges:
-// merged into the neighbour they share most crease edges with (not on a clean mesh).
+// merged into the neighbour they share the longest border with (not on a clean mesh).
 constexpr int kMinPatchFaces = 8;
 // Under noise two patches that meet across a gap in a crease line stay two where the neck is
 // narrower than this times the smaller one's widest point (both as distances to the crease edges;
@@ -59,7 +59,7 @@ constexpr int kMinPatchFaces = 8;
 // crease shapes, the CAD parts and the ABC model at 0-20 % noise): mean adjusted Rand index at 10 /
 // 20 % 0.580 / 0.419 -> 0.590 / 0.483 with 0.7, 0.589 / 0.480 with 0.5, 0.573 / 0.430 with 1.0 (which
 // split one-sheet patches too). Judged on two further noise draws of every CAD part at 5 / 10 / 20 %
-// (0.599 / 0.418 / 0.279 -> 0.604 / 0.443 / 0.303).
+// (0.599 / 0.418 / 0.279 -> 0.605 / 0.443 / 0.303).
 constexpr double kPatchNeckRatio = 0.7;
 // ... and only where a line's free end is at most this many times as far from the neck as the
 // nearest crease edge is, plus this many l_ave: a gap. The neck between a hole's rim and a
