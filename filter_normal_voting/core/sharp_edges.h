@@ -16,10 +16,11 @@
 //    Every CAD export measured has exactly 0 there (its planes and strips hold flat edges), 1 % noise
 //    about 0.2 deg, 5 % 0.8 deg. On a noisy mesh it only adds: a vertex on sharp edges becomes a
 //    crease or corner, any other keeps the votes' class. From kLightNoiseDeg (about 9 % noise on a
-//    regular grid) no edge is sharp by its angle alone (kSharpEdgeAlwaysDeg): only isolated edges
-//    and a chamfer's lines (below) count, since noise takes a coarse cylinder's strip lines over
-//    that angle. The noise test scales with the noise, so the stage fades out by itself as the
-//    noise grows.
+//    regular grid) an edge is sharp by its angle alone (kSharpEdgeAlwaysDeg) only where it also turns
+//    kSharpEdgeAloneOverNoise times what the noise tilts its faces (a coarse part's large faces,
+//    whose creases the ball spans); below that only isolated edges and a chamfer's lines (below)
+//    count, since noise takes a coarse cylinder's strip lines over that angle. The noise test scales
+//    with the noise, so the stage fades out by itself as the noise grows.
 //  - An edge (v, x) between faces (v, x, c) and (x, v, d) is sharp where its dihedral angle theta
 //    is at least the sharp-edge angle (or the crease angle, if lower), stands well above what the
 //    mesh's noise does to faces of those heights over the edge (slivers tilt most), and either is

@@ -87,7 +87,8 @@ constexpr double kCleanMeshNoiseDeg = 0.61;
 // Above the clean angle the sharp edges add the creases and corners the votes miss, the votes keep every
 // other class (the CAD parts at 5 % noise, default and fine meshes' +-1-edge F1 0.82 -> 0.93 and 0.83 ->
 // 0.95, no cell of the synthetic crease set worse). From this noise angle on (about 9 % noise on a regular
-// grid) only isolated sharp edges (and chamfers' lines: sharp_edges.h) count, none by kSharpEdgeAlwaysDeg: with it the 10 % roofs gained a
+// grid) only isolated sharp edges (and chamfers' lines: sharp_edges.h) count, none by kSharpEdgeAlwaysDeg alone (only
+// far above the noise: kSharpEdgeAloneOverNoise): with it the 10 % roofs gained a
 // lone noisy edge of 50 deg, a 10-strip cylinder at 5 % its 36 deg strip lines, and smooth spheres and tori
 // at 20 % false creases. Isolated edges only, against the votes alone there: the CAD parts gain in 28
 // cells of 5-20 % noise and lose in one (ribs_coarse at 20 %, +-1-edge F1 0.28 -> 0.27; draft_boss_coarse
@@ -98,8 +99,19 @@ constexpr double kLightNoiseDeg = 1.36;
 // angle is the lowest tenth, about a third of the typical noise angle): at 8 one in a hundred
 // noisy facet lines of a 1 % cylinder passed.
 constexpr double kSharpEdgeOverNoise = 30.0;
+// From kLightNoiseDeg on, an edge of at least kSharpEdgeAlwaysDeg that turns this many times what the noise
+// tilts faces of its heights is sharp by its angle alone, isolated or not: on a coarse part the ball spans
+// whole faces and the votes miss creases its large faces, barely tilted, still show (CAD parts at 5-20 %:
+// 16 cells better, none worse; draft_boss_coarse at 10 % +-1-edge F1 0.84 -> 0.97, ribs_coarse at 20 %
+// 0.27 -> 0.49; new noise draws of the same parts at 10 / 20 %: 0.879 / 0.826 -> 0.895 / 0.847, patches'
+// ARI 0.443 / 0.303 -> 0.485 / 0.340). 40 gained a little more on those parts but took a 54 deg noise edge
+// on a 10 % cube and 8 (10 %) and 29 (20 %) on a 1 M-vertex noisy torus; 45 still 6 at 20 %, 50 none. The
+// synthetic crease set moves by at most 0.005: the cube at 10-20 % better, the capped cylinder at 20 % worse
+// (a 164 deg fold at a cap's centre). Asking the edge to run on along another sharp edge drops the fold, and
+// most of the gain: a coarse part's lines are often one edge from corner to corner.
+constexpr double kSharpEdgeAloneOverNoise = 50.0;
 // An edge this sharp is a crease whatever its neighbours do (chamfers one edge wide: two creases
-// side by side), below kLightNoiseDeg only; 50-60 lost the ABC model's 45 deg creases (F1 0.99 -> 0.91),
+// side by side), below kLightNoiseDeg (above it only with kSharpEdgeAloneOverNoise); 50-60 lost the ABC model's 45 deg creases (F1 0.99 -> 0.91),
 // and with the chamfer rule in place 60 still lost the export meshes' 45 deg chamfers cut into fans.
 constexpr double kSharpEdgeAlwaysDeg = 40.0;
 // Below that, it must turn this many times more than the lines parallel to it at the faces' far
