@@ -328,14 +328,14 @@ TEST(SharpEdges, UnderHeavyNoiseALineFarAboveTheNoiseNeedsNoIsolation) {
     for (unsigned seed = 1; seed <= 4; ++seed) {
       TMesh m;
       const std::vector<double> turns = {0, 90, -90, 90, -90, 90, -90, 0};
-      Profile(m, turns, 8);
-      const int cols = int(turns.size());
+      const int cols = int(turns.size()), rows = 8;
+      Profile(m, turns, rows);
       NoiseAlongNormals(m, noise * nvv_shapes::MeanEdge(m), seed);
       const NvvRun on = RunNvv(m, SharpEdges(nvv::Params().sharpEdgeAngleDeg)), votes = RunNvv(m, SharpEdges(0));
       ASSERT_FALSE(on.sum.sharpEdges);
       for (std::size_t i = 0; i < m.vert.size(); ++i) {
         const int col = int(i) % cols, row = int(i) / cols;
-        if (row == 0 || row == 8) continue;  // the border rows' ends
+        if (row == 0 || row == rows) continue;  // the lines' ends, on the border
         if (turns[std::size_t(col)] != 0) {
           ++lineVertices;
           found += nvv::IsFeature(on.res[i]);

@@ -87,8 +87,8 @@ constexpr double kCleanMeshNoiseDeg = 0.61;
 // Above the clean angle the sharp edges add the creases and corners the votes miss, the votes keep every
 // other class (the CAD parts at 5 % noise, default and fine meshes' +-1-edge F1 0.82 -> 0.93 and 0.83 ->
 // 0.95, no cell of the synthetic crease set worse). From this noise angle on (about 9 % noise on a regular
-// grid) only isolated sharp edges (and chamfers' lines: sharp_edges.h) count, none by kSharpEdgeAlwaysDeg alone (only
-// far above the noise: kSharpEdgeAloneOverNoise): with it the 10 % roofs gained a
+// grid) only isolated sharp edges (and chamfers' lines: sharp_edges.h) count, none by kSharpEdgeAlwaysDeg
+// alone unless far above the noise (kSharpEdgeAloneOverNoise): with it alone the 10 % roofs gained a
 // lone noisy edge of 50 deg, a 10-strip cylinder at 5 % its 36 deg strip lines, and smooth spheres and tori
 // at 20 % false creases. Isolated edges only, against the votes alone there: the CAD parts gain in 28
 // cells of 5-20 % noise and lose in one (ribs_coarse at 20 %, +-1-edge F1 0.28 -> 0.27; draft_boss_coarse
@@ -111,8 +111,8 @@ constexpr double kSharpEdgeOverNoise = 30.0;
 // most of the gain: a coarse part's lines are often one edge from corner to corner.
 constexpr double kSharpEdgeAloneOverNoise = 50.0;
 // An edge this sharp is a crease whatever its neighbours do (chamfers one edge wide: two creases
-// side by side), below kLightNoiseDeg (above it only with kSharpEdgeAloneOverNoise); 50-60 lost the ABC model's 45 deg creases (F1 0.99 -> 0.91),
-// and with the chamfer rule in place 60 still lost the export meshes' 45 deg chamfers cut into fans.
+// side by side), below kLightNoiseDeg (above it only with kSharpEdgeAloneOverNoise); 50-60 lost the ABC
+// model's 45 deg creases (F1 0.99 -> 0.91), and with the chamfer rule in place 60 still lost the export meshes' 45 deg chamfers cut into fans.
 constexpr double kSharpEdgeAlwaysDeg = 40.0;
 // Below that, it must turn this many times more than the lines parallel to it at the faces' far
 // vertices: 1.5 kept noisy or irregular fillet strips (ribs_coarse F1 0.32, the 1 % capped
