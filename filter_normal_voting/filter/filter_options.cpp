@@ -43,8 +43,8 @@ std::vector<ParamSpec> AlgorithmParameters() {
      "flat beyond, both count) is a crease edge, "
      "so every vertex of a crease is found however close two creases run. On a noisy mesh such edges add the "
      "creases the votes miss and the votes keep the rest (from about 9 % of the edge length only edges that "
-     "turn much more than the lines beside them; the noise hides more of them as it grows). 0: the votes "
-     "everywhere (the paper).",
+     "turn much more than the lines beside them, or far more than the noise tilts their faces; the noise "
+     "hides more of them as it grows). 0: the votes everywhere (the paper).",
      10.0, 0.0, limits::kMaxAngleDeg, {}, {}, false},
     {"stop_at_creases", ParamType::Bool, "Stop curvature at creases",
      "When estimating curvature, do not let a neighbourhood grow across crease and corner vertices, "
