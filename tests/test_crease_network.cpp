@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/crease_network.h"
+#include "core/crease_thinning.h"  // DemoteToSurface
 #include "test_support.h"
 
 using namespace nvv_test;
@@ -137,6 +138,41 @@ TEST(CreaseNetwork, AGapTooWideToCloseStillSplitsItsTwoPatches) {
     const auto& t = n.g.face[f];
     const Eigen::Vector3d c = (n.g.pos[t[0]] + n.g.pos[t[1]] + n.g.pos[t[2]]) / 3.0;
     if (std::abs(c.z()) > 1.0) continue;
+    if (std::abs(c.x() - 5) < 0.1 && c.y() > 3.5) sideX.insert(n.net.facePatch[f]);
+    if (std::abs(c.y() - 5) < 0.1 && c.x() > 3.5) sideY.insert(n.net.facePatch[f]);
+  }
+  ASSERT_EQ(1u, sideX.size());
+  ASSERT_EQ(1u, sideY.size());
+  EXPECT_NE(*sideX.begin(), *sideY.begin());
+}
+
+// A crease the votes lost along its whole length leaves no line and no free end to guard; the
+// normals of the surface vertices on its two sides still part there. A noisy cube (10 %) whose
+// edge x = y = 5 has lost its crease class between its two corners (demoted as thinning demotes:
+// normal from the one-ring): still 6 patches, the faces on either side of that edge in two of them.
+// (Faces joined across every non-crease edge give 5.)
+TEST(CreaseNetwork, ACreaseTheVotesLostStillPartsItsPatchesByTheirNormals) {
+  TMesh m;
+  nvv_shapes::Cube(m, 5.0, 21);
+  NoiseAlongNormals(m, 0.1 * 0.5, 7);  // l_ave = 0.5
+  Network n;
+  n.run = RunNvv(m, WithK(3));
+  nvv::BuildSurfaceGraph(m, n.g, 1);
+  int cleared = 0;
+  for (int v = 0; v < n.g.VertexCount(); ++v) {
+    const Eigen::Vector3d& p = n.g.pos[v];
+    if (std::abs(p.x() - 5) < 0.3 && std::abs(p.y() - 5) < 0.3 && std::abs(p.z()) < 4.6 &&
+        n.run.res[v].cls != nvv::VertexClass::Surface)
+      cleared += nvv::DemoteToSurface(n.g, n.run.res[v], v);
+  }
+  ASSERT_GE(cleared, 18);
+  n.net = nvv::FindCreaseNetwork(n.g, n.run.res, n.run.sum.radius, nvv::Params().creaseAngleDeg);
+  EXPECT_EQ(6, n.net.patchCount);
+  std::set<int> sideX, sideY;
+  for (int f = 0; f < n.g.FaceCount(); ++f) {
+    const auto& t = n.g.face[f];
+    const Eigen::Vector3d c = (n.g.pos[t[0]] + n.g.pos[t[1]] + n.g.pos[t[2]]) / 3.0;
+    if (std::abs(c.z()) > 4.0) continue;
     if (std::abs(c.x() - 5) < 0.1 && c.y() > 3.5) sideX.insert(n.net.facePatch[f]);
     if (std::abs(c.y() - 5) < 0.1 && c.x() > 3.5) sideY.insert(n.net.facePatch[f]);
   }

@@ -224,8 +224,34 @@ int Find(std::vector<int>& up, int x) {
   return x;
 }
 
-// Two faces across an interior edge (f < o), and whether that edge is a crease edge.
+// Two faces across an interior edge (f < o), and what parts them there (a LinkKind).
 using FaceLink = std::array<int, 3>;
+enum LinkKind : int {
+  kJoined = 0,       // nothing: a patch's faces join across it
+  kCreaseLink = 1,   // a crease edge
+  kNormalsJump = 2,  // no crease edge, but the faces' smoothed normals jump (NormalsJump)
+};
+
+// Each face's smoothed normal: the sum of the final normals of its SURFACE vertices (voted, or fitted
+// by pass 2), normalised; zero where it has none. Feature vertices carry a bisector, not a sheet's normal.
+std::vector<Eigen::Vector3d> SmoothedFaceNormals(const SurfaceGraph& g, const std::vector<VertexResult>& res) {
+  std::vector<Eigen::Vector3d> n(g.FaceCount(), Eigen::Vector3d::Zero());
+  for (int f = 0; f < g.FaceCount(); ++f) {
+    for (int v : g.face[f])
+      if (res[v].cls == VertexClass::Surface && res[v].Has(kNormalValid))
+        n[f] += Eigen::Vector3d(res[v].normal[0], res[v].normal[1], res[v].normal[2]);
+    if (n[f].squaredNorm() > 0) n[f].normalize();
+  }
+  return n;
+}
+
+// True when the smoothed normals of two faces (SmoothedFaceNormals) are more than the angle of
+// cosine cosJump apart: under noise a crease the votes saw only in part (a gap gap closing could not
+// bridge, a stretch no vertex of which stayed a crease) still parts the normals of the surface
+// vertices on its two sides, each estimated from its own sheet.
+bool NormalsJump(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double cosJump) {
+  return a.squaredNorm() > 0 && b.squaredNorm() > 0 && a.dot(b) < cosJump;
+}
 
 // The faces next to each face across the links that pass `keep`, CSR.
 struct FaceNeighbours {
@@ -267,7 +293,9 @@ std::vector<double> FaceDistance(const std::vector<Eigen::Vector3d>& centroid, c
 
 // Faces grouped into patches bounded by the crease edges. On a noisy mesh a crease line can keep a
 // gap of a few edges that gap closing could not bridge, and a plain flood across every non-crease
-// edge then runs through it and makes two sheets one patch. So the faces join in a priority flood
+// edge then runs through it and makes two sheets one patch. So two faces whose smoothed normals jump
+// by more than tuning::kPatchNormalJumpOverCreaseAngle times the crease angle do not join across
+// their edge (NormalsJump), and the faces join in a priority flood
 // from the farthest from any crease inwards (a watershed of the distance to the crease edges): a
 // face joins the patch of a neighbour across a non-crease edge, and where it touches two patches it
 // joins them too, unless it stands in a gap: a line's free end about as near as the crease edges
@@ -275,14 +303,22 @@ std::vector<double> FaceDistance(const std::vector<Eigen::Vector3d>& centroid, c
 // point (its distance to the creases against that patch's largest). On a clean mesh (watershed
 // false) every face joins every neighbour across a non-crease edge. Patches smaller than minFaces
 // are then merged into the neighbour they share the longest border with.
-void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, int minFaces, bool watershed,
-                 CreaseNetwork& net) {
+void GrowPatches(const SurfaceGraph& g, const std::vector<VertexResult>& res, const std::vector<Edge>& edges,
+                 double creaseAngleDeg, int minFaces, bool watershed, CreaseNetwork& net) {
   const int nf = g.FaceCount();
   std::vector<int> up(nf);
   std::iota(up.begin(), up.end(), 0);
   auto isCrease = [&](int a, int b) { return std::binary_search(edges.begin(), edges.end(), Key(a, b)); };
   std::vector<FaceLink> links;
-  ForEachInteriorEdge(g, [&](int a, int b, int f, int o) { links.push_back({{f, o, isCrease(a, b) ? 1 : 0}}); });
+  ForEachInteriorEdge(g, [&](int a, int b, int f, int o) {
+    links.push_back({{f, o, isCrease(a, b) ? kCreaseLink : kJoined}});
+  });
+  if (watershed) {
+    const std::vector<Eigen::Vector3d> normal = SmoothedFaceNormals(g, res);
+    const double cosJump = std::cos(DegToRad(tuning::kPatchNormalJumpOverCreaseAngle * creaseAngleDeg));
+    for (auto& l : links)
+      if (l[2] == kJoined && NormalsJump(normal[l[0]], normal[l[1]], cosJump)) l[2] = kNormalsJump;
+  }
   // The faces around the lines' free ends (a gap's two sides); without one no line has a gap.
   std::vector<int> ends;
   if (watershed) {
@@ -293,11 +329,12 @@ void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, int minF
   }
   if (ends.empty()) {
     for (const auto& l : links)
-      if (!l[2]) up[Find(up, l[1])] = Find(up, l[0]);
+      if (l[2] == kJoined) up[Find(up, l[1])] = Find(up, l[0]);
   } else {
+    // The distances are to the crease edges only: a jump of the normals parts two faces but is no line.
     std::vector<int> sides;
     for (const auto& l : links)
-      if (l[2]) sides.push_back(l[0]), sides.push_back(l[1]);
+      if (l[2] == kCreaseLink) sides.push_back(l[0]), sides.push_back(l[1]);
     std::vector<Eigen::Vector3d> centroid(nf);
     for (int f = 0; f < nf; ++f) centroid[f] = (g.pos[g.face[f][0]] + g.pos[g.face[f][1]] + g.pos[g.face[f][2]]) / 3.0;
     const FaceNeighbours acrossAny(nf, links, [](const FaceLink&) { return true; });
@@ -310,7 +347,7 @@ void GrowPatches(const SurfaceGraph& g, const std::vector<Edge>& edges, int minF
     std::vector<int> order(nf);
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](int x, int y) { return dist[x] != dist[y] ? dist[x] > dist[y] : x < y; });
-    const FaceNeighbours across(nf, links, [](const FaceLink& l) { return !l[2]; });
+    const FaceNeighbours across(nf, links, [](const FaceLink& l) { return l[2] == kJoined; });
     std::vector<double> peak(nf, 0);  // per root: the patch's largest distance
     std::vector<char> done(nf, 0);
     std::vector<int> roots;
@@ -427,7 +464,7 @@ CreaseNetwork FindCreaseNetwork(const SurfaceGraph& g, const std::vector<VertexR
   }
   net.spurEdges = DropSpurs(g, res, net.edges, net.edgeCuspAngle, net.lines, net.edgeLine, radius);
   if (net.spurEdges > 0) net.lines = TraceLines(g, res, net.edges, net.edgeCuspAngle, net.edgeLine);
-  GrowPatches(g, net.edges, cleanMesh ? 1 : tuning::kMinPatchFaces, !cleanMesh, net);
+  GrowPatches(g, res, net.edges, creaseAngleDeg, cleanMesh ? 1 : tuning::kMinPatchFaces, !cleanMesh, net);
   return net;
 }
 

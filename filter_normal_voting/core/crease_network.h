@@ -15,7 +15,9 @@
 //  4. Lines (TraceLines): crease edges linked into polylines that end at corners, at the
 //     border, at junctions of three or more lines, or close on themselves.
 //  5. Patches (GrowPatches): faces joined across every non-crease edge. Where the votes decided,
-//     a gap left in a line must not join the two patches it separates: the faces join from the
+//     a gap left in a line must not join the two patches it separates: two faces whose smoothed
+//     normals (their surface vertices' estimated normals) are more than half the crease angle apart
+//     do not join across their edge, and the faces join from the
 //     farthest from any crease edge inwards (a watershed), and two patches that meet at a neck
 //     next to a line's free end, narrower than tuning::kPatchNeckRatio times the smaller patch's
 //     widest point, stay two. Patches of fewer than tuning::kMinPatchFaces faces (noise between

@@ -67,6 +67,15 @@ constexpr double kPatchNeckRatio = 0.7;
 // bracket_fine at 5 % noise (adjusted Rand index 1.00 -> 0.77).
 constexpr double kPatchGapEndDistance = 2.0;
 constexpr double kPatchGapEndSlackEdges = 1.0;
+// Under noise two faces across a non-crease edge stay in different patches where their smoothed
+// normals (their surface vertices' voted or fitted normals) are more than this times the crease
+// angle apart: the two sheets of a crease the lines left a gap in still show there
+// (crease_network.cpp, NormalsJump). Chosen on the accuracy page's network section
+// (mean adjusted Rand index at 5 / 10 / 20 % 0.718 / 0.625 / 0.500 -> 0.729 / 0.643 / 0.565 with 0.5,
+// 0.738 / 0.651 / 0.560 with 0.375, 0.721 / 0.641 / 0.546 with 0.75); judged on two further noise draws
+// of every CAD part (0.626 / 0.468 / 0.341 -> 0.632 / 0.513 / 0.376). It splits a coarse fillet whose
+// faces turn more than that apart (draft_boss_coarse at 20 %).
+constexpr double kPatchNormalJumpOverCreaseAngle = 0.5;
 // A line's direction at its free end is taken from this many edges back (one noisy edge turns
 // up to 45 deg), and a gap is closed only ahead of it, within 45 deg.
 constexpr int kGapDirectionEdges = 3;
