@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <utility>
 
 #include "core/crease_network.h"
 #include "core/crease_thinning.h"  // DemoteToSurface
@@ -25,6 +26,31 @@ Network Find(const TMesh& m, double k = 3) {
   nvv::BuildSurfaceGraph(m, n.g, 1);
   n.net = nvv::FindCreaseNetwork(n.g, n.run.res, n.run.sum.radius, 60.0);
   return n;
+}
+
+// The run (k = 3) and graph of a cube of side 10 with 10 % noise (l_ave = 0.5), its network not yet found.
+Network NoisyCubeRun() {
+  TMesh m;
+  nvv_shapes::Cube(m, 5.0, 21);
+  NoiseAlongNormals(m, 0.1 * 0.5, 7);
+  Network n;
+  n.run = RunNvv(m, WithK(3));
+  nvv::BuildSurfaceGraph(m, n.g, 1);
+  return n;
+}
+
+// The patches of the faces beside the cube's edge x = y = 5 (side 5.0) with centroids at |z| <= zMax:
+// those on the side x = 5 and those on the side y = 5.
+std::pair<std::set<int>, std::set<int>> PatchesBesideEdge(const Network& n, double zMax) {
+  std::pair<std::set<int>, std::set<int>> sides;
+  for (int f = 0; f < n.g.FaceCount(); ++f) {
+    const auto& t = n.g.face[f];
+    const Eigen::Vector3d c = (n.g.pos[t[0]] + n.g.pos[t[1]] + n.g.pos[t[2]]) / 3.0;
+    if (std::abs(c.z()) > zMax) continue;
+    if (std::abs(c.x() - 5) < 0.1 && c.y() > 3.5) sides.first.insert(n.net.facePatch[f]);
+    if (std::abs(c.y() - 5) < 0.1 && c.x() > 3.5) sides.second.insert(n.net.facePatch[f]);
+  }
+  return sides;
 }
 
 std::set<int> EndCorners(const nvv::CreaseNetwork& net) {
@@ -114,12 +140,7 @@ TEST(CreaseNetwork, ARoofUnderNoiseRunsToTheBorderAndSplitsTwoPatches) {
 // crease class over 5 units (10 edges, beyond 2 g_m = 3): still 6 patches, the faces on either
 // side of the gap in two of them. (A plain flood across the gap gives 5.)
 TEST(CreaseNetwork, AGapTooWideToCloseStillSplitsItsTwoPatches) {
-  TMesh m;
-  nvv_shapes::Cube(m, 5.0, 21);
-  NoiseAlongNormals(m, 0.1 * 0.5, 7);  // l_ave = 0.5
-  Network n;
-  n.run = RunNvv(m, WithK(3));
-  nvv::BuildSurfaceGraph(m, n.g, 1);
+  Network n = NoisyCubeRun();
   auto nearEdge = [&](const Eigen::Vector3d& p, double halfGap) {
     return std::abs(p.x() - 5) < 0.3 && std::abs(p.y() - 5) < 0.3 && std::abs(p.z()) < halfGap;
   };
@@ -133,17 +154,10 @@ TEST(CreaseNetwork, AGapTooWideToCloseStillSplitsItsTwoPatches) {
   n.net = nvv::FindCreaseNetwork(n.g, n.run.res, n.run.sum.radius, 60.0);
   EXPECT_EQ(6, n.net.patchCount);
   // The faces at the gap's middle: those on the side x = 5 against those on the side y = 5.
-  std::set<int> sideX, sideY;
-  for (int f = 0; f < n.g.FaceCount(); ++f) {
-    const auto& t = n.g.face[f];
-    const Eigen::Vector3d c = (n.g.pos[t[0]] + n.g.pos[t[1]] + n.g.pos[t[2]]) / 3.0;
-    if (std::abs(c.z()) > 1.0) continue;
-    if (std::abs(c.x() - 5) < 0.1 && c.y() > 3.5) sideX.insert(n.net.facePatch[f]);
-    if (std::abs(c.y() - 5) < 0.1 && c.x() > 3.5) sideY.insert(n.net.facePatch[f]);
-  }
-  ASSERT_EQ(1u, sideX.size());
-  ASSERT_EQ(1u, sideY.size());
-  EXPECT_NE(*sideX.begin(), *sideY.begin());
+  const auto sides = PatchesBesideEdge(n, 1.0);
+  ASSERT_EQ(1u, sides.first.size());
+  ASSERT_EQ(1u, sides.second.size());
+  EXPECT_NE(*sides.first.begin(), *sides.second.begin());
 }
 
 // A crease the votes lost along its whole length leaves no line and no free end to guard; the
@@ -152,12 +166,7 @@ TEST(CreaseNetwork, AGapTooWideToCloseStillSplitsItsTwoPatches) {
 // normal from the one-ring): still 6 patches, the faces on either side of that edge in two of them.
 // (Faces joined across every non-crease edge give 5.)
 TEST(CreaseNetwork, ACreaseTheVotesLostStillPartsItsPatchesByTheirNormals) {
-  TMesh m;
-  nvv_shapes::Cube(m, 5.0, 21);
-  NoiseAlongNormals(m, 0.1 * 0.5, 7);  // l_ave = 0.5
-  Network n;
-  n.run = RunNvv(m, WithK(3));
-  nvv::BuildSurfaceGraph(m, n.g, 1);
+  Network n = NoisyCubeRun();
   int cleared = 0;
   for (int v = 0; v < n.g.VertexCount(); ++v) {
     const Eigen::Vector3d& p = n.g.pos[v];
@@ -168,15 +177,8 @@ TEST(CreaseNetwork, ACreaseTheVotesLostStillPartsItsPatchesByTheirNormals) {
   ASSERT_GE(cleared, 18);
   n.net = nvv::FindCreaseNetwork(n.g, n.run.res, n.run.sum.radius, nvv::Params().creaseAngleDeg);
   EXPECT_EQ(6, n.net.patchCount);
-  std::set<int> sideX, sideY;
-  for (int f = 0; f < n.g.FaceCount(); ++f) {
-    const auto& t = n.g.face[f];
-    const Eigen::Vector3d c = (n.g.pos[t[0]] + n.g.pos[t[1]] + n.g.pos[t[2]]) / 3.0;
-    if (std::abs(c.z()) > 4.0) continue;
-    if (std::abs(c.x() - 5) < 0.1 && c.y() > 3.5) sideX.insert(n.net.facePatch[f]);
-    if (std::abs(c.y() - 5) < 0.1 && c.x() > 3.5) sideY.insert(n.net.facePatch[f]);
-  }
-  ASSERT_EQ(1u, sideX.size());
-  ASSERT_EQ(1u, sideY.size());
-  EXPECT_NE(*sideX.begin(), *sideY.begin());
+  const auto sides = PatchesBesideEdge(n, 4.0);
+  ASSERT_EQ(1u, sides.first.size());
+  ASSERT_EQ(1u, sides.second.size());
+  EXPECT_NE(*sides.first.begin(), *sides.second.begin());
 }
