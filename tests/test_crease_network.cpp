@@ -39,7 +39,7 @@ Network NoisyCubeRun() {
   return n;
 }
 
-// The patches of the faces beside the cube's edge x = y = 5 (side 5.0) with centroids at |z| <= zMax:
+// The patches of the faces beside the edge x = y = 5 of NoisyCubeRun's cube, centroids at |z| <= zMax:
 // those on the side x = 5 and those on the side y = 5.
 std::pair<std::set<int>, std::set<int>> PatchesBesideEdge(const Network& n, double zMax) {
   std::pair<std::set<int>, std::set<int>> sides;

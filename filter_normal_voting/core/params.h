@@ -69,7 +69,8 @@ struct Params {
   // least this (capped by the crease angle) and that stand out from the lines beside them
   // (sharp_edges.h), not from the votes; on a noisy mesh the sharp edges only add creases and
   // corners (from about 9 % noise only edges that turn much more than the lines beside them, or far
-  // more than the noise tilts their faces); 0: the votes everywhere, as in the paper. docs/accuracy.md's CAD section measures both.
+  // more than the noise tilts their faces); 0: the votes everywhere, as in the paper.
+  // docs/accuracy.md's CAD section measures both.
   double sharpEdgeAngleDeg = 10.0;
   double cornerAngleDeg = 60.0; // psi: the same for the third direction (corners)
   bool stopAtCreases = true;    // pass 2 does not march through non-surface vertices (par. 6.5)

@@ -121,7 +121,8 @@ constexpr double kSharpEdgeOverNoise = 30.0;
 constexpr double kSharpEdgeAloneOverNoise = 50.0;
 // An edge this sharp is a crease whatever its neighbours do (chamfers one edge wide: two creases
 // side by side), below kLightNoiseDeg (above it only with kSharpEdgeAloneOverNoise); 50-60 lost the ABC
-// model's 45 deg creases (F1 0.99 -> 0.91), and with the chamfer rule in place 60 still lost the export meshes' 45 deg chamfers cut into fans.
+// model's 45 deg creases (F1 0.99 -> 0.91), and with the chamfer rule in place 60 still lost the export
+// meshes' 45 deg chamfers cut into fans.
 constexpr double kSharpEdgeAlwaysDeg = 40.0;
 // Below that, it must turn this many times more than the lines parallel to it at the faces' far
 // vertices: 1.5 kept noisy or irregular fillet strips (ribs_coarse F1 0.32, the 1 % capped
