@@ -61,6 +61,9 @@ namespace nvv_bench {
 
 namespace {
 
+// The seed offset between two noise draws of one mesh (the held-out section's draws 1 and 2).
+constexpr unsigned kHeldOutSeedStep = 1000003;
+
 typedef std::array<int, 2> Edge;  // lower vertex index first
 
 Edge EdgeOf(int a, int b) { return {{std::min(a, b), std::max(a, b)}}; }
@@ -397,8 +400,16 @@ std::vector<Edge> TrueEdgesOfShape(const CreaseShape& s, const PlainMesh& m) {
 
 }  // namespace
 
-int RunNetworks(const std::string& outDir, const std::string& partsDir) {
-  const std::vector<double> noises = {0, 0.01, 0.05, 0.10, 0.20};
+int RunNetworks(const std::string& outDir, const std::string& partsDir, bool heldOut) {
+  // Held out: other noise draws of the same meshes at the noise levels the defaults were tuned at,
+  // to judge a threshold chosen on the first draw (draw 0, the "network" section's) on draws it
+  // was not chosen on.
+  const std::vector<unsigned> draws = heldOut ? std::vector<unsigned>{1, 2} : std::vector<unsigned>{0};
+  const std::vector<double> noises =
+      heldOut ? std::vector<double>{0.05, 0.10, 0.20} : std::vector<double>{0, 0.01, 0.05, 0.10, 0.20};
+  std::vector<std::pair<unsigned, double>> runs;  // (draw, noise)
+  for (unsigned draw : draws)
+    for (double noise : noises) runs.emplace_back(draw, noise);
   const std::vector<double> angles = {20, 30, 45, 60};
   std::vector<std::unique_ptr<BenchMesh>> meshes;  // TMesh cannot be copied or moved
   for (double a : {20.0, 40.0, 60.0, 90.0, 120.0, 150.0, 175.0})
@@ -436,13 +447,18 @@ int RunNetworks(const std::string& outDir, const std::string& partsDir) {
     }
   }
 
-  Csv csv(outDir, "network.csv",
-          "family,mesh,noise,method,angle,edges_found,edges_true,precision,recall,f1,near_precision,near_recall,near_f1,"
-          "lines_found,lines_true,lines_on_truth,true_lines_covered,hausdorff_mean,hausdorff_max,hausdorff_sym,gap_pct,"
-          "line_f1,patches_found,patches_true,rand,adjusted_rand");
-  Csv tcsv(outDir, "network_truth.csv", "family,mesh,vertices,faces,l_ave,edges,lines,closed_lines,patches,small_patches");
-  std::printf("| family | mesh | vertices | faces | true crease edges | true lines | true patches |\n"
-              "|---|---|---|---|---|---|---|\n");
+  const std::string columns =
+      "family,mesh,noise,method,angle,edges_found,edges_true,precision,recall,f1,near_precision,near_recall,near_f1,"
+      "lines_found,lines_true,lines_on_truth,true_lines_covered,hausdorff_mean,hausdorff_max,hausdorff_sym,gap_pct,"
+      "line_f1,patches_found,patches_true,rand,adjusted_rand";
+  Csv csv(outDir, heldOut ? "network_heldout.csv" : "network.csv", heldOut ? columns + ",draw" : columns);
+  std::unique_ptr<Csv> tcsv;  // the truth's counts, once (with draw 0)
+  if (!heldOut) {
+    tcsv.reset(new Csv(outDir, "network_truth.csv",
+                       "family,mesh,vertices,faces,l_ave,edges,lines,closed_lines,patches,small_patches"));
+    std::printf("| family | mesh | vertices | faces | true crease edges | true lines | true patches |\n"
+                "|---|---|---|---|---|---|---|\n");
+  }
   for (const auto& bp : meshes) {
     const BenchMesh& b = *bp;
     const double lave = nvv_shapes::MeanEdge(b.clean);
@@ -455,23 +471,31 @@ int RunNetworks(const std::string& outDir, const std::string& partsDir) {
     for (int p : truth.facePatch) ++patchFaces[p];
     const int small = int(std::count_if(patchFaces.begin(), patchFaces.end(),
                                         [](int n) { return n < nvv::tuning::kMinPatchFaces; }));
-    std::printf("| %s | %s | %zu | %zu | %zu | %zu | %d |\n", b.family.c_str(), b.name.c_str(), c0.plain.pos.size(),
-                c0.plain.face.size(), truth.edges.size(), truth.lines.size(), truth.patches);
-    std::fprintf(tcsv.f(), "%s,%s,%zu,%zu,%g,%zu,%zu,%d,%d,%d\n", b.family.c_str(), b.name.c_str(), c0.plain.pos.size(),
-                 c0.plain.face.size(), lave, truth.edges.size(), truth.lines.size(), closed, truth.patches, small);
-    for (double noise : noises) {
+    if (tcsv) {
+      std::printf("| %s | %s | %zu | %zu | %zu | %zu | %d |\n", b.family.c_str(), b.name.c_str(), c0.plain.pos.size(),
+                  c0.plain.face.size(), truth.edges.size(), truth.lines.size(), truth.patches);
+      std::fprintf(tcsv->f(), "%s,%s,%zu,%zu,%g,%zu,%zu,%d,%d,%d\n", b.family.c_str(), b.name.c_str(),
+                   c0.plain.pos.size(), c0.plain.face.size(), lave, truth.edges.size(), truth.lines.size(), closed,
+                   truth.patches, small);
+    }
+    for (const auto& run : runs) {
+      const unsigned draw = run.first;
+      const double noise = run.second;
       TMesh m;
       vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, const_cast<TMesh&>(b.clean));
-      const unsigned seed = b.family == "synthetic" ? b.seedBase + unsigned(1000 * noise) : b.seedBase + unsigned(10000 * noise);
+      const unsigned seed = b.seedBase + kHeldOutSeedStep * draw +
+                            (b.family == "synthetic" ? unsigned(1000 * noise) : unsigned(10000 * noise));
       NoiseAlongNormals(m, noise * lave, seed);
       const Context c(m);
       auto row = [&](const char* method, double angle, const Network& n) {
         const Measures x = Measure(c0.plain, lave, truth, n);
-        std::fprintf(csv.f(), "%s,%s,%g,%s,%g,%zu,%zu,%g,%g,%g,%g,%g,%g,%d,%d,%d,%d,%g,%g,%g,%g,%g,%d,%d,%g,%g\n",
+        std::fprintf(csv.f(), "%s,%s,%g,%s,%g,%zu,%zu,%g,%g,%g,%g,%g,%g,%d,%d,%d,%d,%g,%g,%g,%g,%g,%d,%d,%g,%g",
                      b.family.c_str(), b.name.c_str(), noise * 100, method, angle, n.edges.size(), truth.edges.size(),
                      x.precision, x.recall, x.f1, x.nearPrecision, x.nearRecall, x.nearF1, x.linesFound, x.linesTrue,
                      x.linesOnTruth, x.trueLinesCovered, x.hausdorffMean, x.hausdorffMax, x.hausdorffSym, x.gapPct,
                      x.lineF1, x.patchesFound, x.patchesTrue, x.rand, x.adjustedRand);
+        if (heldOut) std::fprintf(csv.f(), ",%u", draw);
+        std::fputc('\n', csv.f());
       };
       row("NVV defaults", nvv::FilterOptions().core.creaseAngleDeg, FilterNetwork(m));
       for (double a : angles) {
@@ -486,7 +510,7 @@ int RunNetworks(const std::string& outDir, const std::string& partsDir) {
         row("CGAL sharp edges", a, cg);
       }
       std::fflush(csv.f());
-      std::fprintf(stderr, "network: %s %g %%\n", b.name.c_str(), noise * 100);
+      std::fprintf(stderr, "network: %s %g %% (draw %u)\n", b.name.c_str(), noise * 100, draw);
     }
   }
   return 0;

@@ -11,7 +11,7 @@ int RunCreases(const std::string& outDir, const std::string& which); // "f1" or 
 int RunReal(const std::string& outDir);
 int RunCad(const std::string& outDir, const std::string& partsDir);  // bench/cad/make_cad_parts.py's output
 // crease edges, lines and patches against the truth, beside MeshLab's and CGAL's
-int RunNetworks(const std::string& outDir, const std::string& partsDir);
+int RunNetworks(const std::string& outDir, const std::string& partsDir, bool heldOut);  // heldOut: draws 1, 2
 }  // namespace nvv_bench
 
 #endif

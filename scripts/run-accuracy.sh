@@ -4,7 +4,8 @@
 # five sections (bench/accuracy.cpp), the quadric fit's levers (bench/explore_fit.cpp), the
 # Python libraries' estimators on the smooth sections' meshes (bench/python_peers.py) and the
 # "cad" section on parts made by gmsh's OpenCASCADE kernel (bench/cad/make_cad_parts.py), the
-# "network" section (crease edges, lines and patches) on those parts and the crease shapes, and
+# "network" section (crease edges, lines and patches) on those parts and the crease shapes (and
+# again on two other noise draws of each, "heldout"), and
 # turns their tables and CSV files into the page, the CSV files beside it and the plots
 # (bench/accuracy_report.py, matplotlib from Debian: apt-get install python3-matplotlib).
 # The Python estimators run in a virtual environment, build-bench/pyvenv, made with Debian's
@@ -63,6 +64,10 @@ run_network() {
   lock build-bench/bench/nvv_bench_accuracy network "$out" "$out/cad" >"$out/network.md"
   echo "$(( $(date +%s) - t0 ))" >"$out/network_seconds.txt"
   echo "section network: $(( $(date +%s) - t0 )) s"
+  # The same meshes on two other noise draws, on which no threshold was chosen.
+  t0=$(date +%s)
+  lock build-bench/bench/nvv_bench_accuracy heldout "$out" "$out/cad" >/dev/null
+  echo "section heldout: $(( $(date +%s) - t0 )) s"
 }
 
 case "${NVV_ACCURACY_ONLY:-}" in python|cad|network)
