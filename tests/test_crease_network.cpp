@@ -182,3 +182,65 @@ TEST(CreaseNetwork, ACreaseTheVotesLostStillPartsItsPatchesByTheirNormals) {
   ASSERT_EQ(1u, sides.second.size());
   EXPECT_NE(*sides.first.begin(), *sides.second.begin());
 }
+
+// A chamfer's two lines lie two edges apart; a gap in one of them is closed along that line, not
+// across the chamfer to the other, whose vertices are the nearest crease vertices ahead. A clean
+// chamfer of 45 + 45 deg (lines at columns 6 and 8 of a profile extruded over 24 cells) whose line
+// at column 6 lost its crease class on rows 10-13: no crease edge touches the chamfer's middle
+// column 7, and the line at column 6 runs on every row. (Without the side-step rule gap closing
+// crosses to column 8 from both ends of the gap.)
+TEST(CreaseNetwork, AGapInAChamfersLineIsClosedAlongItNotAcrossToTheOtherLine) {
+  const int cols = 15, rows = 24;
+  std::vector<double> turns(cols, 0.0);
+  turns[6] = turns[8] = 45;
+  TMesh m;
+  Profile(m, turns, rows);
+  NvvRun run = RunNvv(m, WithK(3));
+  ASSERT_TRUE(run.sum.sharpEdges);
+  nvv::SurfaceGraph g;
+  nvv::BuildSurfaceGraph(m, g, 1);
+  for (int v = 0; v < g.VertexCount(); ++v)
+    ASSERT_EQ(v % cols == 6 || v % cols == 8, nvv::IsFeature(run.res[v])) << "vertex " << v;
+  for (int j = 10; j <= 13; ++j) ASSERT_EQ(1, nvv::DemoteToSurface(g, run.res[j * cols + 6], j * cols + 6));
+  const nvv::CreaseNetwork net =
+      nvv::FindCreaseNetwork(g, run.res, run.sum.radius, nvv::Params().creaseAngleDeg, run.sum.sharpEdges);
+  int middle = 0;
+  std::set<int> rowsOnLine6;
+  for (const auto& e : net.edges) {
+    middle += e[0] % cols == 7 || e[1] % cols == 7;
+    if (e[0] % cols == 6 && e[1] % cols == 6) rowsOnLine6.insert({e[0] / cols, e[1] / cols});
+  }
+  EXPECT_EQ(0, middle);
+  EXPECT_EQ(std::size_t(rows + 1), rowsOnLine6.size());
+}
+
+// A gap's path follows the mesh's creases: a clean cube (side 10, l_ave 0.5) whose corner (5, 5, 5)
+// and the next two vertices along each of its three edges lost their crease class has its lines
+// joined again through the corner, every crease edge on the cube's edges (two coordinates at +-5),
+// none across a face. (Costed by length alone the shortest paths cut the corner across the faces.)
+TEST(CreaseNetwork, AGapAtACornerIsClosedAlongTheEdgesNotAcrossTheFaces) {
+  TMesh m;
+  nvv_shapes::Cube(m, 5.0, 21);
+  Network n;
+  n.run = RunNvv(m, WithK(3));
+  ASSERT_TRUE(n.run.sum.sharpEdges);
+  nvv::BuildSurfaceGraph(m, n.g, 1);
+  int cleared = 0;
+  for (int v = 0; v < n.g.VertexCount(); ++v)
+    if ((n.g.pos[v] - Eigen::Vector3d(5, 5, 5)).norm() < 1.1 && nvv::IsFeature(n.run.res[v]))
+      cleared += nvv::DemoteToSurface(n.g, n.run.res[v], v);
+  ASSERT_EQ(7, cleared);
+  n.net = nvv::FindCreaseNetwork(n.g, n.run.res, n.run.sum.radius, nvv::Params().creaseAngleDeg, true);
+  auto onCubeEdge = [&](int v) {
+    int at = 0;
+    for (int j = 0; j < 3; ++j) at += std::abs(std::abs(n.g.pos[v][j]) - 5) < 1e-9;
+    return at >= 2;
+  };
+  int across = 0, nearCorner = 0;
+  for (const auto& e : n.net.edges) {
+    across += !onCubeEdge(e[0]) || !onCubeEdge(e[1]);
+    nearCorner += (n.g.pos[e[0]] - Eigen::Vector3d(5, 5, 5)).norm() < 1.1;
+  }
+  EXPECT_EQ(0, across);
+  EXPECT_GE(nearCorner, 6);
+}

@@ -20,17 +20,6 @@ std::vector<char> Features(const NvvRun& r) {
   return f;
 }
 
-// The faces of a grid of vertices stored row by row, `cols` to a row, over `rows` rows of cells:
-// each cell cut into two triangles along the same diagonal.
-void GridFaces(TMesh& m, int cols, int rows) {
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i + 1 < cols; ++i) {
-      const int a = j * cols + i, b = a + 1, c = a + cols + 1, d = a + cols;
-      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[b], &m.vert[c]);
-      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[c], &m.vert[d]);
-    }
-}
-
 // A tent: two planes meeting along the y axis at a normal-angle alpha, on a grid of n x n cells.
 void Tent(TMesh& m, double alphaDeg, int n) {
   m.Clear();
@@ -42,23 +31,6 @@ void Tent(TMesh& m, double alphaDeg, int n) {
       v[j * (n + 1) + i].P() = vcg::Point3d(x, y, -slope * std::abs(x));
     }
   GridFaces(m, n + 1, n);
-}
-
-// A profile in the xz plane extruded along y over n cells: columns one unit of arc apart, the
-// profile turning by turnDeg[i] at column i (0 elsewhere), each cell cut into two triangles.
-void Profile(TMesh& m, const std::vector<double>& turnDeg, int n) {
-  m.Clear();
-  const int cols = int(turnDeg.size());
-  std::vector<vcg::Point3d> at(std::size_t(cols), vcg::Point3d(0, 0, 0));
-  double heading = 0;
-  for (int i = 1; i < cols; ++i) {
-    heading += turnDeg[std::size_t(i - 1)] * 3.14159265358979 / 180;
-    at[std::size_t(i)] = at[std::size_t(i - 1)] + vcg::Point3d(std::cos(heading), 0, std::sin(heading));
-  }
-  auto v = vcg::tri::Allocator<TMesh>::AddVertices(m, std::size_t(cols * (n + 1)));
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i < cols; ++i) v[j * cols + i].P() = at[std::size_t(i)] + vcg::Point3d(0, j, 0);
-  GridFaces(m, cols, n);
 }
 
 // How many faces of the cube [-h, h]^3 the point p lies on: 2 on an edge, 3 at a corner.

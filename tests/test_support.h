@@ -177,6 +177,34 @@ inline void CappedCylinder(TMesh& m, double R, double h, int nu, int nv) {
   for (const auto& f : faces) vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[f[0]], &m.vert[f[1]], &m.vert[f[2]]);
 }
 
+// The faces of a grid of vertices stored row by row, `cols` to a row, over `rows` rows of cells:
+// each cell cut into two triangles along the same diagonal.
+inline void GridFaces(TMesh& m, int cols, int rows) {
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i + 1 < cols; ++i) {
+      const int a = j * cols + i, b = a + 1, c = a + cols + 1, d = a + cols;
+      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[b], &m.vert[c]);
+      vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[c], &m.vert[d]);
+    }
+}
+
+// A profile in the xz plane extruded along y over n cells: columns one unit of arc apart, the
+// profile turning by turnDeg[i] at column i (0 elsewhere), each cell cut into two triangles.
+inline void Profile(TMesh& m, const std::vector<double>& turnDeg, int n) {
+  m.Clear();
+  const int cols = int(turnDeg.size());
+  std::vector<vcg::Point3d> at(std::size_t(cols), vcg::Point3d(0, 0, 0));
+  double heading = 0;
+  for (int i = 1; i < cols; ++i) {
+    heading += turnDeg[std::size_t(i - 1)] * 3.14159265358979 / 180;
+    at[std::size_t(i)] = at[std::size_t(i - 1)] + vcg::Point3d(std::cos(heading), 0, std::sin(heading));
+  }
+  auto v = vcg::tri::Allocator<TMesh>::AddVertices(m, std::size_t(cols * (n + 1)));
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i < cols; ++i) v[j * cols + i].P() = at[std::size_t(i)] + vcg::Point3d(0, j, 0);
+  GridFaces(m, cols, n);
+}
+
 }  // namespace nvv_test
 
 #endif

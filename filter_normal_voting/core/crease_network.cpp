@@ -133,12 +133,17 @@ std::vector<CreaseLine> TraceLines(const SurfaceGraph& g, const std::vector<Vert
 }
 
 // Continues each line that stops at a crease vertex off the border (a gap, not an end): the
-// shortest path (through feature vertices where it can), within `radius` and ahead of the line's direction, to a
-// vertex of another line (or of its own, when that closes a line longer than 2 g_m) or of the border:
-// under noise the last vertices before the border may vote like one sheet, and a line one edge short
-// of it leaves its two sheets one patch. Returns the edges added.
+// shortest path (through feature vertices and along edges that turn where it can), within `radius`
+// and ahead of the line's direction, to a vertex of another line (or of its own, when that closes a
+// line longer than 2 g_m) or of the border: under noise the last vertices before the border may
+// vote like one sheet, and a line one edge short of it leaves its two sheets one patch. A crease
+// vertex whose line runs parallel to this one, beside it rather than ahead, is not a target: that is
+// the other line of a chamfer, not this line's continuation. `creaseAngle` in radians. Returns the
+// edges added.
 std::vector<Edge> GapEdges(const SurfaceGraph& g, const std::vector<VertexResult>& res, const std::vector<Edge>& edges,
-                           const std::vector<CreaseLine>& lines, const std::vector<int>& edgeLine, double radius) {
+                           const std::vector<CreaseLine>& lines, const std::vector<int>& edgeLine, double radius,
+                           double creaseAngle) {
+  const double flatEdge = tuning::kGapFlatEdgeOverCreaseAngle * creaseAngle;
   const int n = g.VertexCount();
   const Incidence inc(n, edges);
   std::vector<int> lineOf(n, -1);
@@ -170,15 +175,26 @@ std::vector<Edge> GapEdges(const SurfaceGraph& g, const std::vector<VertexResult
       if (it.first > dist[x]) continue;
       if (x != v && (lineOf[x] >= 0 || g.OnBorder(x))) {
         const bool sameLine = lineOf[x] == edgeLine[e0];
-        const bool ahead45 = (g.pos[x] - g.pos[v]).normalized().dot(ahead) >= tuning::kCreaseEdgeMinCosToTangent;
-        if (ahead45 && (!sameLine || own.length > 2 * radius)) target = x;
+        const Eigen::Vector3d step = g.pos[x] - g.pos[v];
+        const bool ahead45 = step.normalized().dot(ahead) >= tuning::kCreaseEdgeMinCosToTangent;
+        const bool beside = !sameLine && IsCrease(res[x]) &&
+                            std::abs(ToVec(res[x].creaseTangent).normalized().dot(ahead)) >= tuning::kCosSameLine &&
+                            (step - step.dot(ahead) * ahead).norm() > tuning::kGapSideStepEdges * g.meanEdge;
+        if (ahead45 && !beside && (!sameLine || own.length > 2 * radius)) target = x;
         continue;  // a line or border vertex ends the search there either way
       }
       for (int i = g.FaceBegin(x); i < g.FaceEnd(x); ++i)
         for (int y : g.face[g.vfList[i]]) {
           if (y == x || y == prev || (g.pos[y] - g.pos[v]).norm() > radius) continue;
-          // Through feature vertices where it can: a surface vertex costs its edge twice.
-          const double d = dist[x] + (g.pos[y] - g.pos[x]).norm() * (IsFeature(res[y]) ? 1.0 : 2.0);
+          // Through feature vertices where it can: a surface vertex costs its edge twice; and along
+          // edges that turn: one whose faces turn less than kGapFlatEdgeOverCreaseAngle times the
+          // crease angle costs kGapFlatEdgeCost times more (a path across a face cuts a corner).
+          const int f = g.vfList[i];
+          double cosTurn = 1;
+          g.ForEachFaceAcross(f, x, y,
+                              [&](int o) { cosTurn = std::min(cosTurn, g.faceNormal[f].dot(g.faceNormal[o])); });
+          const double flat = std::acos(std::max(-1.0, cosTurn)) < flatEdge ? tuning::kGapFlatEdgeCost : 1.0;
+          const double d = dist[x] + (g.pos[y] - g.pos[x]).norm() * (IsFeature(res[y]) ? 1.0 : 2.0) * flat;
           if (dist[y] >= 0 && dist[y] <= d) continue;
           if (dist[y] < 0) touched.push_back(y);
           dist[y] = d;
@@ -444,7 +460,8 @@ CreaseNetwork FindCreaseNetwork(const SurfaceGraph& g, const std::vector<VertexR
 
   // Gaps: lines first, then the edges that continue them, then the lines again.
   net.lines = TraceLines(g, res, net.edges, net.edgeCuspAngle, net.edgeLine);
-  const std::vector<Edge> gaps = GapEdges(g, res, net.edges, net.lines, net.edgeLine, tuning::kGapReachOverRadius * radius);
+  const std::vector<Edge> gaps = GapEdges(g, res, net.edges, net.lines, net.edgeLine, tuning::kGapReachOverRadius * radius,
+                                            DegToRad(creaseAngleDeg));
   if (!gaps.empty()) {
     std::vector<std::pair<Edge, float>> all;
     for (std::size_t i = 0; i < net.edges.size(); ++i) all.push_back({net.edges[i], net.edgeCuspAngle[i]});

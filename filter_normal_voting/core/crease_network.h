@@ -8,9 +8,10 @@
 //     the crease tangent, whose two faces lean apart across the crease line as much as half the
 //     cusp angle says the sheets do. Between two corners (no tangent) the dihedral angle of the
 //     two faces decides, against the crease angle.
-//  2. Gaps (CloseGaps): a line that stops at a crease vertex (not a corner, not the border)
-//     is continued along feature vertices to another crease edge, or to the border (a crease
-//     that runs off an open mesh), within 2 g_m ahead of it.
+//  2. Gaps (GapEdges): a line that stops at a crease vertex (not a corner, not the border)
+//     is continued along feature vertices and edges that turn to another crease edge, or to the
+//     border (a crease that runs off an open mesh), within 2 g_m ahead of it; not to a parallel
+//     line beside it (a chamfer's other line).
 //  3. Spurs (DropSpurs): lines shorter than g_m that still stop at a crease vertex are dropped.
 //  4. Lines (TraceLines): crease edges linked into polylines that end at corners, at the
 //     border, at junctions of three or more lines, or close on themselves.

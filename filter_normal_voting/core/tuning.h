@@ -82,6 +82,20 @@ constexpr int kGapDirectionEdges = 3;
 // Gaps are closed up to this many g_m: the neighbourhood's diameter (at 20 % noise a 90 deg crease
 // on a cube loses runs of 4 edges, 1.1 g_m).
 constexpr double kGapReachOverRadius = 2.0;
+// A gap's path follows the mesh's creases where it can: an edge whose faces turn less than this
+// times the crease angle costs kGapFlatEdgeCost times its length (a path across a face cut the
+// corners where a chamfer meets other creases, 1.2-1.4 l_ave off the true lines), and a crease
+// vertex of a parallel line more than kGapSideStepEdges l_ave beside the free end's direction is no
+// target (a chamfer's other line, 2 l_ave away on the fine block). Chosen on the accuracy page's
+// network section (meshes whose lines match or beat both peers' best at 1 / 5 / 10 / 20 %: 26 / 24 /
+// 18 / 19 -> 27 / 26 / 19 / 20 of 30; side step 1 and 2 l_ave, a cost of 3, within one mesh of it)
+// and judged on its two held-out noise draws (lines at 5 / 10 / 20 %: 20 / 18 / 19 -> 23 / 21 / 19
+// and 24 / 15 / 19 -> 24 / 17 / 19; mean ARI within 0.006 of before but at 20 % on draw 0,
+// 0.565 -> 0.548). Falling back to the beside vertex where nothing else is found kept the patches'
+// leaks closed but half the lines' gain.
+constexpr double kGapFlatEdgeOverCreaseAngle = 0.5;
+constexpr double kGapFlatEdgeCost = 2.0;
+constexpr double kGapSideStepEdges = 1.5;
 
 // --- Creases of clean tessellations (sharp_edges.h) -------------------------------------------
 // Chosen on the gmsh CAD parts (block, shallow, draft boss, ribs, bracket; docs/accuracy.md) and
