@@ -138,12 +138,11 @@ std::vector<CreaseLine> TraceLines(const SurfaceGraph& g, const std::vector<Vert
 // line longer than 2 g_m) or of the border: under noise the last vertices before the border may
 // vote like one sheet, and a line one edge short of it leaves its two sheets one patch. A crease
 // vertex whose line runs parallel to this one, beside it rather than ahead, is not a target: that is
-// the other line of a chamfer, not this line's continuation. `creaseAngle` in radians. Returns the
-// edges added.
+// the other line of a chamfer, not this line's continuation. Returns the edges added.
 std::vector<Edge> GapEdges(const SurfaceGraph& g, const std::vector<VertexResult>& res, const std::vector<Edge>& edges,
                            const std::vector<CreaseLine>& lines, const std::vector<int>& edgeLine, double radius,
-                           double creaseAngle) {
-  const double flatEdge = tuning::kGapFlatEdgeOverCreaseAngle * creaseAngle;
+                           double creaseAngleDeg) {
+  const double cosFlatEdge = std::cos(DegToRad(tuning::kGapFlatEdgeOverCreaseAngle * creaseAngleDeg));
   const int n = g.VertexCount();
   const Incidence inc(n, edges);
   std::vector<int> lineOf(n, -1);
@@ -193,7 +192,7 @@ std::vector<Edge> GapEdges(const SurfaceGraph& g, const std::vector<VertexResult
           double cosTurn = 1;
           g.ForEachFaceAcross(f, x, y,
                               [&](int o) { cosTurn = std::min(cosTurn, g.faceNormal[f].dot(g.faceNormal[o])); });
-          const double flat = std::acos(std::max(-1.0, cosTurn)) < flatEdge ? tuning::kGapFlatEdgeCost : 1.0;
+          const double flat = cosTurn > cosFlatEdge ? tuning::kGapFlatEdgeCost : 1.0;
           const double d = dist[x] + (g.pos[y] - g.pos[x]).norm() * (IsFeature(res[y]) ? 1.0 : 2.0) * flat;
           if (dist[y] >= 0 && dist[y] <= d) continue;
           if (dist[y] < 0) touched.push_back(y);
@@ -461,7 +460,7 @@ CreaseNetwork FindCreaseNetwork(const SurfaceGraph& g, const std::vector<VertexR
   // Gaps: lines first, then the edges that continue them, then the lines again.
   net.lines = TraceLines(g, res, net.edges, net.edgeCuspAngle, net.edgeLine);
   const std::vector<Edge> gaps = GapEdges(g, res, net.edges, net.lines, net.edgeLine, tuning::kGapReachOverRadius * radius,
-                                            DegToRad(creaseAngleDeg));
+                                            creaseAngleDeg);
   if (!gaps.empty()) {
     std::vector<std::pair<Edge, float>> all;
     for (std::size_t i = 0; i < net.edges.size(); ++i) all.push_back({net.edges[i], net.edgeCuspAngle[i]});
