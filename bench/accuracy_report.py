@@ -784,6 +784,7 @@ for noise in NET_NOISES:
 
 # The same on two other noise draws of every mesh at 5, 10 and 20 % (section "heldout"), on which
 # no threshold was chosen, beside the draw the network section measures (draw 0).
+HELDOUT_NOISES = ("5", "10", "20")
 net_heldout = rows("network_heldout.csv")
 if net_heldout:
     with open(os.path.join(res, "network_heldout.csv")) as f_in, \
@@ -792,10 +793,12 @@ if net_heldout:
 heldout_runs = defaultdict(list)  # (family, mesh, noise, draw) -> rows
 for r in net_heldout:
     heldout_runs[(r["family"], r["mesh"], r["noise"], r["draw"])].append(r)
+heldout_draws = sorted({k[3] for k in heldout_runs})
 heldout_wins = {}  # (noise, draw) -> (meshes, Counter)
-for noise in ("5", "10", "20"):
-    for draw in sorted({k[3] for k in heldout_runs}):
-        heldout_wins[noise, draw] = count_wins({k: v for k, v in heldout_runs.items() if k[3] == draw}, noise)
+for draw in heldout_draws:
+    runs_of_draw = {k: v for k, v in heldout_runs.items() if k[3] == draw}
+    for noise in HELDOUT_NOISES:
+        heldout_wins[noise, draw] = count_wins(runs_of_draw, noise)
 
 
 def heldout_row(noise, draw, n_c):
@@ -804,17 +807,17 @@ def heldout_row(noise, draw, n_c):
         ["%s / %s" % (f2(c[g, "ours"] / n), f2(c[g, "peers"] / n)) for g in ("lines", "patches")]
 
 
-heldout_lines = []
-for noise in ("5", "10", "20"):
-    if net_heldout:
-        heldout_lines.append(heldout_row(noise, "0 (tuned on)", net_wins[noise]))
-    heldout_lines += [heldout_row(noise, d, heldout_wins[nz, d]) for (nz, d) in sorted(heldout_wins) if nz == noise]
 def mean(n_c, g, who):
     return n_c[1][g, who] / n_c[0]
 
 
+heldout_lines = []
+for noise in HELDOUT_NOISES:
+    if net_heldout:
+        heldout_lines.append(heldout_row(noise, "0 (tuned on)", net_wins[noise]))
+    heldout_lines += [heldout_row(noise, d, heldout_wins[noise, d]) for d in heldout_draws]
 if net_heldout:
-    draws_all = [(n, "0", net_wins[n]) for n in ("5", "10", "20")] + [(n, d, heldout_wins[n, d]) for (n, d) in heldout_wins]
+    draws_all = [(n, "0", net_wins[n]) for n in HELDOUT_NOISES] + [(n, d, heldout_wins[n, d]) for (n, d) in heldout_wins]
     claim(all(mean(nc, "lines", "ours") > mean(nc, "lines", "peers") for _, _, nc in draws_all),
           "on every draw the defaults' mean line F1 is above the peers' best")
     claim(all((mean(nc, "patches", "ours") < mean(nc, "patches", "peers")) == (n != "20") for n, _, nc in draws_all),
