@@ -1,5 +1,6 @@
 #include "crease_thinning.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -119,7 +120,8 @@ std::vector<std::uint8_t> RidgeActions(const SurfaceGraph& g, const std::vector<
   for (int v = 0; v < n; ++v) {
     if (!IsFeature(res[v])) continue;
     const bool ridgeHere = ridge[v].F > 0;
-    const bool keep = sharp[v] || (ridgeHere && !ridge[v].rounded && !OffFittedRidge(g, ridge, v) &&
+    const bool keep = sharp[v] || (ridgeHere && !ridge[v].rounded && !ridge[v].chamferMiddle &&
+                                   !OffFittedRidge(g, ridge, v) &&
                                    !StrongerNeighbourAcross(g, v, lineOf(v), sharpScore, lineOf, kCosSameLine));
     if (!keep) action[v] = kDemote;
     else if (res[v].cls == VertexClass::Corner && OffRidge(g, res, v)) action[v] = kCornerToCrease;
@@ -156,6 +158,7 @@ struct RidgeScratch {
   explicit RidgeScratch(const SurfaceGraph& g) : flood(g) {}
   BallFlood flood;
   std::vector<Eigen::Vector3d> xyz, bestXyz;  // the ball in a frame; in the stronger fit's
+  Eigen::Vector3d bestAxis = Eigen::Vector3d::UnitZ();  // the stronger fit's frame normal
 };
 
 // True when Eq. 10 with epsilon = eta = `epsilon` calls r a feature (pass 1's eigenvalues, in
@@ -187,9 +190,89 @@ RidgeFitResult StrongerRidgeFit(const SurfaceGraph& g, const VertexResult& r, in
       sc.xyz.emplace_back(F.e1.dot(d), F.e2.dot(d), F.n.dot(d));
     }
     const RidgeFitResult f = FitRidge(F, sc.xyz, floorRss * double(sc.xyz.size()));
-    if (f.ok && (!fit.ok || f.F > fit.F)) fit = f, sc.bestXyz.swap(sc.xyz);
+    if (f.ok && (!fit.ok || f.F > fit.F)) fit = f, sc.bestXyz.swap(sc.xyz), sc.bestAxis = F.n;
   }
   return fit;
+}
+
+// The mean dihedral angle (radians) of the mesh edges along `tangent` between two vertices of `line`, and
+// their mean length; count: how many.
+struct LineEdges {
+  double turn = 0, length = 0;
+  int count = 0;
+};
+LineEdges EdgesAlong(const SurfaceGraph& g, const std::vector<int>& line, const Eigen::Vector3d& tangent) {
+  LineEdges out;
+  for (int a : line)
+    for (int i = g.FaceBegin(a); i < g.FaceEnd(a); ++i) {
+      const int f = g.vfList[i];
+      for (int b : g.face[f]) {
+        if (b <= a || std::find(line.begin(), line.end(), b) == line.end()) continue;
+        const Eigen::Vector3d d = g.pos[b] - g.pos[a];
+        if (std::abs(d.normalized().dot(tangent)) < kCosAcrossLine) continue;
+        g.ForEachFaceAcross(f, a, b, [&](int o) {  // each face pair once, from its lower face
+          if (o <= f) return;
+          // Unsigned: a mesh whose orientation flips there still turns by the smaller angle.
+          out.turn += std::acos(std::max(-1.0, std::min(1.0, std::abs(g.faceNormal[f].dot(g.faceNormal[o])))));
+          out.length += d.norm();
+          ++out.count;
+        });
+      }
+    }
+  if (out.count > 0) out.turn /= out.count, out.length /= out.count;
+  return out;
+}
+
+// A chamfer across v's band (FitChamfer): two kinks at least kChamferMinWidth l_ave apart, each turning
+// between kChamferMinTurnDeg and kChamferMaxTurnDeg, which fit the heights within the noise and better
+// than any single kink or fillet (SmoothProfileResidual) by kChamferGain times the noise's variance; and
+// along each line the mesh itself must turn (its edges there, beyond what noise turns an edge, by
+// kChamferEdgeTurn of the fitted angle) on edges of at least kChamferMinEdge l_ave: a CAD mesher puts a
+// chamfer's lines on mesh edges and does not refine a flat strip, while a fillet's rows each turn a
+// fraction of it and are refined. The ball's vertices within kChamferOnLine l_ave of a line claim a crease
+// there (ApplyChamferClaims); v itself, on neither line, is the strip's middle, which thinning removes.
+void ChamferLines(const SurfaceGraph& g, int v, const RidgeFitResult& fit, const RidgeScratch& sc, double sigma2,
+                  double noiseTurn, std::vector<ChamferClaim>& claims, RidgeScore& score) {
+  const ChamferFitResult c = FitChamfer(sc.bestXyz, fit.lineInFrame, g.meanEdge);
+  if (!c.ok || c.w2 - c.w1 < tuning::kChamferMinWidth * g.meanEdge) return;
+  const double minTurn = DegToRad(tuning::kChamferMinTurnDeg), maxTurn = DegToRad(tuning::kChamferMaxTurnDeg);
+  if (std::min(c.alpha1, c.alpha2) < minTurn || std::max(c.alpha1, c.alpha2) > maxTurn) return;
+  const int n = int(sc.bestXyz.size());
+  if (c.rssTwo > (n - 5) * tuning::kRidgeConfirmNoise * tuning::kRidgeConfirmNoise * sigma2) return;
+  // The ball's vertices on each line.
+  const double tol = tuning::kChamferOnLine * g.meanEdge;
+  const std::vector<int>& reached = sc.flood.Reached();
+  std::vector<int> onLine[2];
+  for (std::size_t i = 0; i < reached.size(); ++i) {
+    const Eigen::Vector3d& q = sc.bestXyz[i];
+    const double w = -q.x() * fit.lineInFrame.y() + q.y() * fit.lineInFrame.x();
+    if (std::abs(w - c.w1) < tol) onLine[0].push_back(reached[i]);
+    else if (std::abs(w - c.w2) < tol) onLine[1].push_back(reached[i]);
+  }
+  const double alpha[2] = {c.alpha1, c.alpha2};
+  for (int k = 0; k < 2; ++k) {
+    const LineEdges e = EdgesAlong(g, onLine[k], fit.tangent);
+    if (e.count < 2 || e.turn - noiseTurn < tuning::kChamferEdgeTurn * alpha[k] ||
+        e.length < tuning::kChamferMinEdge * g.meanEdge)
+      return;
+  }
+  if (SmoothProfileResidual(sc.bestXyz, fit.lineInFrame, g.meanEdge) - c.rssTwo < tuning::kChamferGain * sigma2) return;
+  const TangentFrame F(sc.bestAxis);
+  std::vector<ChamferClaim> mine;
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::Vector3d s = c.sheetNormal[k] + c.sheetNormal[k + 1];
+    const Eigen::Vector3d bisector = (s.x() * F.e1 + s.y() * F.e2 + s.z() * F.n).normalized();
+    for (int q : onLine[k]) {
+      ChamferClaim cl{q, v, {}, {}, float(alpha[k])};
+      for (int j = 0; j < 3; ++j) cl.tangent[j] = float(fit.tangent[j]), cl.normal[j] = float(bisector[j]);
+      mine.push_back(cl);
+    }
+  }
+  if (std::find(onLine[0].begin(), onLine[0].end(), v) == onLine[0].end() &&
+      std::find(onLine[1].begin(), onLine[1].end(), v) == onLine[1].end())
+    score.chamferMiddle = true;
+#pragma omp critical(nvv_chamfer_claims)
+  claims.insert(claims.end(), mine.begin(), mine.end());
 }
 
 }  // namespace
@@ -207,7 +290,8 @@ int DemoteToSurface(const SurfaceGraph& g, VertexResult& r, int v) {
 }
 
 PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res, const Pass1Settings& s,
-                    double creaseAngleDeg, int threads, PassProgress& progress, std::vector<RidgeScore>& ridge) {
+                    double creaseAngleDeg, int threads, PassProgress& progress, std::vector<RidgeScore>& ridge,
+                    std::vector<ChamferClaim>* claims) {
   AssignOnHugePages(ridge, g.VertexCount());
   const double floorRss = tuning::kRidgeResidualFloor * g.meanEdge * g.meanEdge;
   const double phi = DegToRad(creaseAngleDeg);
@@ -215,6 +299,8 @@ PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res,
   const double confirmSigma = std::max(s.noiseSigma, tuning::kRidgeConfirmFloorEdges * g.meanEdge);
   const double confirmMeanSquare = tuning::kRidgeConfirmNoise * tuning::kRidgeConfirmNoise * confirmSigma * confirmSigma;
   const double roundedGain = tuning::kRoundedRidgeGain * confirmSigma * confirmSigma;
+  const double chamferSigma2 = confirmSigma * confirmSigma;
+  const double noiseTurn = claims ? MedianEdgeAngle(g) : 0;
   const double ridgeRadius =
       std::min(std::max(s.radius, tuning::kRidgeRadiusMin * g.meanEdge), tuning::kRidgeRadiusMax * g.meanEdge);
   return ParallelOverVertices<RidgeScratch>(g, threads, progress, [&](int v, RidgeScratch& sc) {
@@ -233,7 +319,32 @@ PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res,
     // times the noise's variance better. It still suppresses its band's weaker rows (RidgeActions),
     // and is demoted itself.
     ridge[v].rounded = RoundedRidgeGain(sc.bestXyz, fit.lineInFrame, g.meanEdge) > roundedGain;
+    if (claims) ChamferLines(g, v, fit, sc, chamferSigma2, noiseTurn, *claims, ridge[v]);
   });
+}
+
+// Surface vertices claimed by at least kChamferClaims chamfer fits become creases along the first
+// claimer's line (claims sorted by vertex, then claimer: the same on any thread count).
+std::size_t ApplyChamferClaims(const SurfaceGraph& g, std::vector<VertexResult>& res,
+                               std::vector<ChamferClaim>& claims) {
+  std::sort(claims.begin(), claims.end(), [](const ChamferClaim& a, const ChamferClaim& b) {
+    return a.vertex < b.vertex || (a.vertex == b.vertex && a.by < b.by);
+  });
+  std::size_t promoted = 0;
+  for (std::size_t i = 0; i < claims.size();) {
+    std::size_t j = i;
+    while (j < claims.size() && claims[j].vertex == claims[i].vertex) ++j;
+    VertexResult& r = res[claims[i].vertex];
+    if (int(j - i) >= tuning::kChamferClaims && r.cls == VertexClass::Surface && g.usable[claims[i].vertex]) {
+      r.cls = VertexClass::Crease;
+      r.flags |= kCreaseValid | kNormalValid;
+      for (int k = 0; k < 3; ++k) r.creaseTangent[k] = claims[i].tangent[k], r.normal[k] = claims[i].normal[k];
+      r.cuspAngle = claims[i].alpha;
+      ++promoted;
+    }
+    i = j;
+  }
+  return promoted;
 }
 
 PassEnd ThinCreases(const SurfaceGraph& g, const Params& p, const Pass1Settings& s, int threads,
@@ -245,9 +356,12 @@ PassEnd ThinCreases(const SurfaceGraph& g, const Params& p, const Pass1Settings&
     return PassEnd::Done;
   }
   std::vector<RidgeScore> ridge;
-  const PassEnd end = ScoreRidges(g, res, s, p.creaseAngleDeg, threads, progress, ridge);
+  std::vector<ChamferClaim> claims;
+  const PassEnd end = ScoreRidges(g, res, s, p.creaseAngleDeg, threads, progress, ridge, &claims);
   if (end != PassEnd::Done) return end;
   thinned = ThinCreaseBandByRidgeFit(g, res, ridge, threads, p.creaseAngleDeg);
+  const std::size_t promoted = ApplyChamferClaims(g, res, claims);
+  thinned = thinned > promoted ? thinned - promoted : 0;
   return PassEnd::Done;
 }
 

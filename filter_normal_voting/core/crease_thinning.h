@@ -13,7 +13,11 @@
 //    larger kink F statistic, and no sharp mesh edge lies clearly across it. Where the faces'
 //    normals scatter by more than phi under noise, the heights still show the kink. A ridge whose
 //    heights fit a round profile far better than the kink (RoundedRidgeGain: a fillet narrower
-//    than the ball) is demoted too, while its F still suppresses the weaker rows of its band.
+//    than the ball) is demoted too, while its F still suppresses the weaker rows of its band. A
+//    chamfer narrower than the ball votes as one crease across its strip: where a ridge's heights
+//    fit two kinks (FitChamfer) better than any one kink or fillet and the mesh turns along both
+//    lines on edges of about l_ave, the vertices on the two lines become creases (ChamferClaim,
+//    applied after thinning) and the strip's middle is thinned.
 //  - the strength form (ThinCreaseBand): suppression on Eq. 7's feature strength
 //    lambda_2 + lambda_3, which peaks where the two sheets' votes balance, i.e. on the crease.
 // Both keep a crease vertex that lies on two sharp mesh edges along its own crease
@@ -47,6 +51,16 @@ struct RidgeScore {
   std::array<float, 3> tangent{{0, 0, 0}};   // the fitted ridge line
   float alphaRad = 0;
   bool rounded = false;  // the heights fit a rounded profile far better (RoundedRidgeGain): a fillet
+  bool chamferMiddle = false;  // its heights fit a chamfer (FitChamfer) whose lines both miss v
+};
+
+// A vertex on a line of a chamfer fitted at band vertex `by` (FitChamfer): a crease along `tangent`
+// turning by `alpha`.
+struct ChamferClaim {
+  int vertex, by;
+  float tangent[3];
+  float normal[3];  // the bisector of the line's two planes
+  float alpha;
 };
 
 // Makes feature vertex v a SURFACE vertex whose normal restarts from its one-ring's (off the
@@ -62,7 +76,8 @@ PassEnd ThinCreases(const SurfaceGraph& g, const Params& p, const Pass1Settings&
 
 // The ridge fit of every feature vertex within a ball of about g_m (tuning.h) into `ridge`.
 PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res, const Pass1Settings& s,
-                    double creaseAngleDeg, int threads, PassProgress& progress, std::vector<RidgeScore>& ridge);
+                    double creaseAngleDeg, int threads, PassProgress& progress, std::vector<RidgeScore>& ridge,
+                    std::vector<ChamferClaim>* claims = nullptr);
 
 // The ridge-fit form: demotes the feature vertices that are not on a fitted ridge, keeps corners
 // where two kept ridges meet, and closes one-vertex gaps (CloseCreaseGaps). Returns the feature

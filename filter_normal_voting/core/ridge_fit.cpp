@@ -146,4 +146,122 @@ double RoundedRidgeGain(const std::vector<Eigen::Vector3d>& xyz, const Eigen::Ve
   return sharp >= 0 && round >= 0 ? sharp - round : 0;
 }
 
+ChamferFitResult FitChamfer(const std::vector<Eigen::Vector3d>& xyz, const Eigen::Vector2d& lineInFrame,
+                            double meanEdge) {
+  ChamferFitResult out;
+  const int n = int(xyz.size());
+  if (n < 2 * (kRidgeBasis + 2)) return out;
+  auto across = [&](const Eigen::Vector3d& q) { return -q.x() * lineInFrame.y() + q.y() * lineInFrame.x(); };
+  const int K = 2 * tuning::kChamferOffsetSteps + 1;
+  auto offset = [&](int i) { return (i - tuning::kChamferOffsetSteps) * tuning::kChamferOffsetStep * meanEdge; };
+  typedef Eigen::Matrix<double, kRidgeBasis + 2, 1> Column;
+  typedef Eigen::Matrix<double, kRidgeBasis + 2, kRidgeBasis + 2> Normal;
+  // The samples' moments once: the sheet's, each offset's profile |w - w_i| against the sheet and z,
+  // so that a pair of offsets needs only the sum of the two profiles' products.
+  const RidgeMoments m(xyz);
+  std::vector<double> prof(std::size_t(K) * n);
+  std::vector<RidgeBasis> su(K, RidgeBasis::Zero());
+  std::vector<double> sww(K, 0), szw(K, 0);
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double w = std::abs(across(xyz[j]) - offset(i));
+      prof[std::size_t(i) * n + j] = w;
+      su[i] += w * RidgeBasisAt(xyz[j]);
+      sww[i] += w * w;
+      szw[i] += xyz[j].z() * w;
+    }
+  Normal A = Normal::Zero();
+  Column r = Column::Zero();
+  A.topLeftCorner<kRidgeBasis, kRidgeBasis>() = m.P.topLeftCorner<kRidgeBasis, kRidgeBasis>();
+  r.head<kRidgeBasis>() = m.P.block<kRidgeBasis, 1>(0, kRidgeBasis);
+  const double zz = m.P(kRidgeBasis, kRidgeBasis);
+  double best = -1;
+  Column beta = Column::Zero();
+  int bi = -1, bk = -1;
+  for (int i = 0; i < K; ++i)
+    for (int k = i + 1; k < K; ++k) {
+      double cross = 0;
+      const double* pi = &prof[std::size_t(i) * n];
+      const double* pk = &prof[std::size_t(k) * n];
+      for (int j = 0; j < n; ++j) cross += pi[j] * pk[j];
+      A.block<kRidgeBasis, 1>(0, kRidgeBasis) = su[i];
+      A.block<kRidgeBasis, 1>(0, kRidgeBasis + 1) = su[k];
+      A.block<1, kRidgeBasis>(kRidgeBasis, 0) = su[i].transpose();
+      A.block<1, kRidgeBasis>(kRidgeBasis + 1, 0) = su[k].transpose();
+      A(kRidgeBasis, kRidgeBasis) = sww[i];
+      A(kRidgeBasis + 1, kRidgeBasis + 1) = sww[k];
+      A(kRidgeBasis, kRidgeBasis + 1) = A(kRidgeBasis + 1, kRidgeBasis) = cross;
+      r(kRidgeBasis) = szw[i];
+      r(kRidgeBasis + 1) = szw[k];
+      Eigen::LDLT<Normal> ldlt(A);
+      if (ldlt.info() != Eigen::Success) continue;
+      const Column b = ldlt.solve(r);
+      if (!b.allFinite()) continue;
+      const double rss = std::max(0.0, zz - b.dot(r));
+      if (best < 0 || rss < best) best = rss, bi = i, bk = k, beta = b;
+    }
+  if (best < 0) return out;
+  out.rssTwo = best;
+  out.w1 = offset(bi);
+  out.w2 = offset(bk);
+  // Slopes across the lines (times the across direction a): -(b1 + b2) before w1, b1 - b2 between, b1 + b2 after.
+  const Eigen::Vector2d a(-lineInFrame.y(), lineInFrame.x()), grad(beta(1), beta(2));
+  const double b1 = beta(kRidgeBasis), b2 = beta(kRidgeBasis + 1);
+  auto normalOf = [&](double slope) {
+    const Eigen::Vector2d gr = grad + slope * a;
+    return Eigen::Vector3d(-gr.x(), -gr.y(), 1).normalized();
+  };
+  out.sheetNormal[0] = normalOf(-b1 - b2);
+  out.sheetNormal[1] = normalOf(b1 - b2);
+  out.sheetNormal[2] = normalOf(b1 + b2);
+  out.alpha1 = std::acos(std::max(-1.0, std::min(1.0, out.sheetNormal[0].dot(out.sheetNormal[1]))));
+  out.alpha2 = std::acos(std::max(-1.0, std::min(1.0, out.sheetNormal[1].dot(out.sheetNormal[2]))));
+  out.ok = true;
+  return out;
+}
+
+double SmoothProfileResidual(const std::vector<Eigen::Vector3d>& xyz, const Eigen::Vector2d& lineInFrame,
+                             double meanEdge) {
+  const RidgeMoments m(xyz);
+  auto across = [&](const Eigen::Vector3d& q) { return -q.x() * lineInFrame.y() + q.y() * lineInFrame.x(); };
+  double best = -1;
+  auto keep = [&](double rss) {
+    if (rss >= 0 && (best < 0 || rss < best)) best = rss;
+  };
+  for (int i = -tuning::kChamferOffsetSteps; i <= tuning::kChamferOffsetSteps; ++i) {
+    const double w0 = i * tuning::kChamferOffsetStep * meanEdge;
+    keep(m.ResidualOf([&](const Eigen::Vector3d& q) { return std::abs(across(q) - w0); }, nullptr));
+    for (double radius : tuning::kChamferRoundRadii) {
+      const double rho = radius * meanEdge;
+      // A fillet as a hyperbola, and as a parabola between two planes (the slope turning linearly over 2 rho).
+      keep(m.ResidualOf([&](const Eigen::Vector3d& q) {
+        const double w = across(q) - w0;
+        return std::sqrt(w * w + rho * rho);
+      }, nullptr));
+      keep(m.ResidualOf([&](const Eigen::Vector3d& q) {
+        const double w = std::abs(across(q) - w0);
+        return w >= rho ? w - 0.5 * rho : 0.5 * w * w / rho;
+      }, nullptr));
+    }
+    // One kink between sheets that curve away from it (a hole's rim beside a plane).
+    Eigen::Matrix<double, kRidgeBasis + 3, kRidgeBasis + 3> N;
+    N.setZero();
+    Eigen::Matrix<double, kRidgeBasis + 3, 1> r = Eigen::Matrix<double, kRidgeBasis + 3, 1>::Zero();
+    double zz = 0;
+    for (const Eigen::Vector3d& q : xyz) {
+      const double w = across(q) - w0;
+      Eigen::Matrix<double, kRidgeBasis + 3, 1> u;
+      u << RidgeBasisAt(q), std::abs(w), w > 0 ? w * w : 0.0, w < 0 ? w * w : 0.0;
+      N.noalias() += u * u.transpose();
+      r += q.z() * u;
+      zz += q.z() * q.z();
+    }
+    Eigen::LDLT<Eigen::Matrix<double, kRidgeBasis + 3, kRidgeBasis + 3>> ldlt(N);
+    if (ldlt.info() != Eigen::Success) continue;
+    const Eigen::Matrix<double, kRidgeBasis + 3, 1> b = ldlt.solve(r);
+    if (b.allFinite()) keep(std::max(0.0, zz - b.dot(r)));
+  }
+  return best;
+}
+
 }  // namespace nvv

@@ -56,6 +56,27 @@ RidgeFitResult FitRidge(const TangentFrame& F, const std::vector<Eigen::Vector3d
 // best round lies at the offset grid's end (another feature of the ball).
 double RoundedRidgeGain(const std::vector<Eigen::Vector3d>& xyz, const Eigen::Vector2d& lineInFrame, double meanEdge);
 
+// A chamfer across the line `lineInFrame` (a FitRidge result's): two kinks in the heights,
+// z = h + p x + q y + b1 |w - w1| + b2 |w - w2|, w1 < w2 searched on a grid of offsets across the line
+// (tuning::kChamferOffsetStep l_ave apart, kChamferOffsetSteps each way): the three planes of a chamfer
+// strip between two sheets, which the one-kink ridge fit puts as one crease in the strip's middle.
+struct ChamferFitResult {
+  bool ok = false;
+  double w1 = 0, w2 = 0;            // the two lines' offsets across lineInFrame
+  double alpha1 = 0, alpha2 = 0;    // the surface's turn at each (radians)
+  double rssTwo = 0;                // the heights' residual sum of squares
+  Eigen::Vector3d sheetNormal[3];   // the three planes' normals in the fit's frame (w < w1, between, w > w2)
+};
+ChamferFitResult FitChamfer(const std::vector<Eigen::Vector3d>& xyz, const Eigen::Vector2d& lineInFrame,
+                            double meanEdge);
+
+// The smallest residual sum of squares of the heights across the same line by a smooth or one-kink
+// profile on the same offset grid: one kink; a fillet (a hyperbola, or a parabola between two planes,
+// of the radii tuning::kChamferRoundRadii); one kink between sheets that curve away from it. A chamfer
+// must beat them all.
+double SmoothProfileResidual(const std::vector<Eigen::Vector3d>& xyz, const Eigen::Vector2d& lineInFrame,
+                             double meanEdge);
+
 }  // namespace nvv
 
 #endif

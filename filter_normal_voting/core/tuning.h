@@ -207,6 +207,42 @@ constexpr double kRoundedRidgeGain = 40.0;
 constexpr double kRoundedRidgeOffsetStep = 0.1;
 constexpr int kRoundedRidgeOffsetSteps = 10;
 constexpr double kRoundedRidgeRadii[] = {0.25, 0.5, 0.75, 1.0, 1.5};
+// --- Chamfers narrower than the ball (crease_thinning.h, ridge_fit.h FitChamfer) --------------------
+// Chosen on the CAD parts' first noise draw (block_default's 2 mm chamfers, 1.5 l_ave wide: at 10 %
+// noise 72 vertices of their lines were missed, the votes seeing one 90 deg crease across each strip);
+// judged on the parts' two held-out draws at 5 / 10 / 20 % (vertex F1: block_default at 10 % better on
+// both, no other cell changed), the synthetic crease set and fandisk (unchanged) and the ABC model
+// (within 0.003). docs/accuracy.md has the tables.
+// The two lines' offsets across the fitted line: steps of this many l_ave, that many each way (the ball's
+// radius, 2-3 l_ave).
+constexpr double kChamferOffsetStep = 0.2;
+constexpr int kChamferOffsetSteps = 12;
+// The lines at least this far apart: closer, noise at a single crease fits two kinks (a 90 deg crease
+// at 10 % noise: 0.2-0.4 l_ave); the CAD parts' chamfers are 0.8-1.6 l_ave wide.
+constexpr double kChamferMinWidth = 0.6;
+// The fillets a chamfer must fit better than (SmoothProfileResidual), radii in l_ave: up to a fillet
+// wider than the ball.
+constexpr double kChamferRoundRadii[] = {0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0};
+// Each line turns within this range: a 90 deg crease beside a curved sheet (a hole's rim) fits a second
+// kink of 85-135 deg beside one of 60-90; the parts' chamfers turn 20-60 deg at 10 % noise.
+constexpr double kChamferMinTurnDeg = 20.0;
+constexpr double kChamferMaxTurnDeg = 75.0;
+// Better than the best smooth or one-kink profile by this many times the noise's variance: an F of 9
+// for the one parameter more (the second kink's size; its offset is searched).
+constexpr double kChamferGain = 9.0;
+// A vertex lies on a fitted line within this many l_ave (the grid step and the noise across the line).
+constexpr double kChamferOnLine = 0.3;
+// A vertex becomes a crease when this many chamfer fits put it on a line: one fit's line through a
+// rib's foot or a hole's rim is not enough.
+constexpr int kChamferClaims = 2;
+// Along each line the mesh's edges turn, beyond the mesh's median edge angle (what noise turns any
+// edge), at least this fraction of the fitted angle: on the parts' chamfers 0.7-1.6 of it, on the
+// draft boss's 2 mm fillet, which fits two kinks at 10 % noise as well, 0.3-0.6 (each of its rows turns
+// 22.5 deg).
+constexpr double kChamferEdgeTurn = 0.5;
+// ... on edges at least this many l_ave long: a mesher refines a fillet and not a flat chamfer strip
+// (the parts' chamfer lines 0.8-1.5 l_ave, the ribs' 0.7 mm fillets 0.24-0.39, the boss fillet 0.44-0.48).
+constexpr double kChamferMinEdge = 0.6;
 
 // An edge v->u lies "across" a line when |cos| of its angle with the line is below this (37 deg
 // from the line: keeps the diagonals of a grid), "along" it when |cos| is above it.
