@@ -323,6 +323,8 @@ PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res,
   });
 }
 
+namespace {
+
 // Surface vertices claimed by at least kChamferClaims chamfer fits become creases along the first
 // claimer's line (claims sorted by vertex, then claimer: the same on any thread count).
 std::size_t ApplyChamferClaims(const SurfaceGraph& g, std::vector<VertexResult>& res,
@@ -346,6 +348,8 @@ std::size_t ApplyChamferClaims(const SurfaceGraph& g, std::vector<VertexResult>&
   }
   return promoted;
 }
+
+}  // namespace
 
 PassEnd ThinCreases(const SurfaceGraph& g, const Params& p, const Pass1Settings& s, int threads,
                     PassProgress& progress, std::vector<VertexResult>& res, std::size_t& thinned) {

@@ -69,12 +69,14 @@ struct ChamferClaim {
 int DemoteToSurface(const SurfaceGraph& g, VertexResult& r, int v);
 
 // Thins the band by the configured form (Params::thinCreases, Params::ridgeFit), scoring the
-// ridges first where the ridge fit is used. `thinned`: feature vertices removed, net of gaps
-// closed.
+// ridges first where the ridge fit is used, then adds the chamfers' lines the ridge fit found.
+// `thinned`: feature vertices removed, net of gaps closed and chamfer-line vertices added.
 PassEnd ThinCreases(const SurfaceGraph& g, const Params& p, const Pass1Settings& s, int threads,
                     PassProgress& progress, std::vector<VertexResult>& res, std::size_t& thinned);
 
-// The ridge fit of every feature vertex within a ball of about g_m (tuning.h) into `ridge`.
+// The ridge fit of every feature vertex within a ball of about g_m (tuning.h) into `ridge`; with
+// `claims`, also the chamfer fit where the ridge fit passed, and the vertices on its two lines
+// (in no particular order: ApplyChamferClaims sorts them).
 PassEnd ScoreRidges(const SurfaceGraph& g, const std::vector<VertexResult>& res, const Pass1Settings& s,
                     double creaseAngleDeg, int threads, PassProgress& progress, std::vector<RidgeScore>& ridge,
                     std::vector<ChamferClaim>* claims = nullptr);
