@@ -245,7 +245,7 @@ void ChamferLines(const SurfaceGraph& g, int v, const RidgeFitResult& fit, const
   std::vector<int> onLine[2];
   for (std::size_t i = 0; i < reached.size(); ++i) {
     const Eigen::Vector3d& q = sc.bestXyz[i];
-    const double w = -q.x() * fit.lineInFrame.y() + q.y() * fit.lineInFrame.x();
+    const double w = AcrossLine(q, fit.lineInFrame);
     if (std::abs(w - c.w1) < tol) onLine[0].push_back(reached[i]);
     else if (std::abs(w - c.w2) < tol) onLine[1].push_back(reached[i]);
   }

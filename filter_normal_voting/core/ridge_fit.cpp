@@ -65,7 +65,8 @@ struct RidgeMoments {
   // The ridge's RSS_1 at direction theta: the profile |w|.
   double Residual(double theta, Column* beta) const {
     const double c = std::cos(theta), s = std::sin(theta);
-    return ResidualOf([c, s](const Eigen::Vector3d& q) { return std::abs(-q.x() * s + q.y() * c); }, beta);
+    const Eigen::Vector2d line(c, s);
+    return ResidualOf([&line](const Eigen::Vector3d& q) { return std::abs(AcrossLine(q, line)); }, beta);
   }
 };
 
@@ -110,7 +111,7 @@ RidgeFitResult FitRidge(const TangentFrame& F, const std::vector<Eigen::Vector3d
   const double wp = 1 / (1 + gp.squaredNorm()), wm = 1 / (1 + gm.squaredNorm());
   double across1 = 0;
   for (const Eigen::Vector3d& q : xyz) {
-    const double w = -q.x() * s + q.y() * c;
+    const double w = AcrossLine(q, Eigen::Vector2d(c, s));
     const double e = q.z() - beta.head<kRidgeBasis>().dot(RidgeBasisAt(q)) - kink * std::abs(w);
     across1 += e * e * (w >= 0 ? wp : wm);
   }
@@ -124,17 +125,17 @@ RidgeFitResult FitRidge(const TangentFrame& F, const std::vector<Eigen::Vector3d
 
 double RoundedRidgeGain(const std::vector<Eigen::Vector3d>& xyz, const Eigen::Vector2d& lineInFrame, double meanEdge) {
   const RidgeMoments m(xyz);
-  auto across = [&](const Eigen::Vector3d& q) { return -q.x() * lineInFrame.y() + q.y() * lineInFrame.x(); };
   double sharp = -1, round = -1;
   int roundAt = 0;
   for (int i = -tuning::kRoundedRidgeOffsetSteps; i <= tuning::kRoundedRidgeOffsetSteps; ++i) {
     const double w0 = i * tuning::kRoundedRidgeOffsetStep * meanEdge;
-    const double rs = m.ResidualOf([&](const Eigen::Vector3d& q) { return std::abs(across(q) - w0); }, nullptr);
+    const double rs =
+        m.ResidualOf([&](const Eigen::Vector3d& q) { return std::abs(AcrossLine(q, lineInFrame) - w0); }, nullptr);
     if (rs >= 0 && (sharp < 0 || rs < sharp)) sharp = rs;
     for (double radius : tuning::kRoundedRidgeRadii) {
       const double rho2 = radius * radius * meanEdge * meanEdge;
       const double rr = m.ResidualOf([&](const Eigen::Vector3d& q) {
-        const double w = across(q) - w0;
+        const double w = AcrossLine(q, lineInFrame) - w0;
         return std::sqrt(w * w + rho2);
       }, nullptr);
       if (rr >= 0 && (round < 0 || rr < round)) round = rr, roundAt = i;
@@ -151,7 +152,6 @@ ChamferFitResult FitChamfer(const std::vector<Eigen::Vector3d>& xyz, const Eigen
   ChamferFitResult out;
   const int n = int(xyz.size());
   if (n < 2 * (kRidgeBasis + 2)) return out;
-  auto across = [&](const Eigen::Vector3d& q) { return -q.x() * lineInFrame.y() + q.y() * lineInFrame.x(); };
   const int K = 2 * tuning::kChamferOffsetSteps + 1;
   auto offset = [&](int i) { return (i - tuning::kChamferOffsetSteps) * tuning::kChamferOffsetStep * meanEdge; };
   typedef Eigen::Matrix<double, kRidgeBasis + 2, 1> Column;
@@ -164,7 +164,7 @@ ChamferFitResult FitChamfer(const std::vector<Eigen::Vector3d>& xyz, const Eigen
   std::vector<double> sww(K, 0), szw(K, 0);
   for (int i = 0; i < K; ++i)
     for (int j = 0; j < n; ++j) {
-      const double w = std::abs(across(xyz[j]) - offset(i));
+      const double w = std::abs(AcrossLine(xyz[j], lineInFrame) - offset(i));
       prof[std::size_t(i) * n + j] = w;
       su[i] += w * RidgeBasisAt(xyz[j]);
       sww[i] += w * w;
@@ -223,23 +223,22 @@ ChamferFitResult FitChamfer(const std::vector<Eigen::Vector3d>& xyz, const Eigen
 double SmoothProfileResidual(const std::vector<Eigen::Vector3d>& xyz, const Eigen::Vector2d& lineInFrame,
                              double meanEdge) {
   const RidgeMoments m(xyz);
-  auto across = [&](const Eigen::Vector3d& q) { return -q.x() * lineInFrame.y() + q.y() * lineInFrame.x(); };
   double best = -1;
   auto keep = [&](double rss) {
     if (rss >= 0 && (best < 0 || rss < best)) best = rss;
   };
   for (int i = -tuning::kChamferOffsetSteps; i <= tuning::kChamferOffsetSteps; ++i) {
     const double w0 = i * tuning::kChamferOffsetStep * meanEdge;
-    keep(m.ResidualOf([&](const Eigen::Vector3d& q) { return std::abs(across(q) - w0); }, nullptr));
+    keep(m.ResidualOf([&](const Eigen::Vector3d& q) { return std::abs(AcrossLine(q, lineInFrame) - w0); }, nullptr));
     for (double radius : tuning::kChamferRoundRadii) {
       const double rho = radius * meanEdge;
       // A fillet as a hyperbola, and as a parabola between two planes (the slope turning linearly over 2 rho).
       keep(m.ResidualOf([&](const Eigen::Vector3d& q) {
-        const double w = across(q) - w0;
+        const double w = AcrossLine(q, lineInFrame) - w0;
         return std::sqrt(w * w + rho * rho);
       }, nullptr));
       keep(m.ResidualOf([&](const Eigen::Vector3d& q) {
-        const double w = std::abs(across(q) - w0);
+        const double w = std::abs(AcrossLine(q, lineInFrame) - w0);
         return w >= rho ? w - 0.5 * rho : 0.5 * w * w / rho;
       }, nullptr));
     }
@@ -249,7 +248,7 @@ double SmoothProfileResidual(const std::vector<Eigen::Vector3d>& xyz, const Eige
     Eigen::Matrix<double, kRidgeBasis + 3, 1> r = Eigen::Matrix<double, kRidgeBasis + 3, 1>::Zero();
     double zz = 0;
     for (const Eigen::Vector3d& q : xyz) {
-      const double w = across(q) - w0;
+      const double w = AcrossLine(q, lineInFrame) - w0;
       Eigen::Matrix<double, kRidgeBasis + 3, 1> u;
       u << RidgeBasisAt(q), std::abs(w), w > 0 ? w * w : 0.0, w < 0 ? w * w : 0.0;
       N.noalias() += u * u.transpose();

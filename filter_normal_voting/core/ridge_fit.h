@@ -43,6 +43,12 @@ struct RidgeFitResult {
   Eigen::Vector2d lineInFrame = Eigen::Vector2d::Zero();  // the same, (e1, e2) of the fit's frame
 };
 
+// The signed distance w of a sample q (in a fit's frame) across the line through v along the unit
+// direction `line` of the frame's plane: what every profile below is a function of.
+inline double AcrossLine(const Eigen::Vector3d& q, const Eigen::Vector2d& line) {
+  return -q.x() * line.y() + q.y() * line.x();
+}
+
 // `xyz`: the neighbours (v itself included) in the frame F, i.e. (e1.d, e2.d, n.d) of d = q - v.
 // `floorRss`: the smallest residual that counts (a clean mesh's exact fits give ~0).
 RidgeFitResult FitRidge(const TangentFrame& F, const std::vector<Eigen::Vector3d>& xyz, double floorRss);
