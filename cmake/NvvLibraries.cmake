@@ -16,7 +16,7 @@ find_package(OpenMP REQUIRED)
 
 set(NVV_CORE_SOURCES
   crease_curvature.cpp crease_thinning.cpp curvature_votes.cpp geodesic_march.cpp normal_vector_voting.cpp
-  crease_network.cpp noise_estimate.cpp normal_votes.cpp params.cpp ridge_fit.cpp sharp_edges.cpp sheet_fit.cpp surface_curvature.cpp
+  crease_network.cpp locality_order.cpp noise_estimate.cpp normal_votes.cpp params.cpp ridge_fit.cpp sharp_edges.cpp sheet_fit.cpp surface_curvature.cpp
   surface_graph.cpp)
 list(TRANSFORM NVV_CORE_SOURCES PREPEND "${NVV_SOURCE_ROOT}/filter_normal_voting/core/")
 set(NVV_FILTER_SOURCES filter_options.cpp run_filter.cpp)

@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "locality_order.h"
 #include "parallel_pass.h"
 #include "params.h"
 #include "surface_graph.h"
@@ -58,16 +59,31 @@ class NormalVectorVoting {
   static nvv::Status Compute(const MeshType& m, const nvv::Params& p, std::vector<nvv::VertexResult>& res,
                              nvv::Summary& sum, const nvv::Progress& cb = nvv::Progress()) {
     nvv::SurfaceGraph g;
-    return Compute(m, p, res, sum, g, cb);
+    return Run(m, p, res, sum, g, false, cb);
   }
   // The same, keeping the working copy in g for what reads the mesh's edges and faces after the
   // run (the crease network, crease_network.h).
   static nvv::Status Compute(const MeshType& m, const nvv::Params& p, std::vector<nvv::VertexResult>& res,
                              nvv::Summary& sum, nvv::SurfaceGraph& g, const nvv::Progress& cb = nvv::Progress()) {
+    return Run(m, p, res, sum, g, true, cb);
+  }
+
+ private:
+  static nvv::Status Run(const MeshType& m, const nvv::Params& p, std::vector<nvv::VertexResult>& res,
+                         nvv::Summary& sum, nvv::SurfaceGraph& g, bool keepGraph, const nvv::Progress& cb) {
     // An absurd thread count is refused by the run below; until then the graph must not try it.
     const int graphThreads = nvv::ValidateParams(p).empty() ? p.threads : 1;
     nvv::BuildSurfaceGraph(m, g, graphThreads);
-    return nvv::RunNormalVectorVoting(g, p, res, sum, cb);
+    // A large mesh in a poor order is renumbered for the passes (locality_order.h); the results
+    // come back in m's numbering, and the graph is built again in it where the caller keeps it.
+    nvv::LocalityOrder order;
+    order.Apply(g, graphThreads);
+    const nvv::Status st = nvv::RunNormalVectorVoting(g, p, res, sum, cb);
+    if (order.Active()) {
+      order.RestoreResults(g, res, graphThreads);
+      if (keepGraph) nvv::BuildSurfaceGraph(m, g, graphThreads);
+    }
+    return st;
   }
 };
 

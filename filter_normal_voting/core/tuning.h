@@ -33,6 +33,15 @@ constexpr double kAutoVisitBudget = 2.5e8;
 // 100,000-face fan is no longer scanned from each of its spokes (total work quadratic in the fan;
 // 32 left a 20,000-face fan at 30 s).
 constexpr int kMarchFacesPerVertex = 8;
+// Meshes of at least this many vertices are renumbered along a Morton curve for the passes
+// (locality_order.h): their graph (about 190 bytes per vertex) is tens of MB, far beyond a core's
+// cache, where a neighbourhood scattered over the arrays costs a miss per member.
+constexpr int kLocalityOrderMinVertices = 200000;
+// ... and only where the mesh's order scatters neighbourhoods: the median one-ring index span
+// (over this many sampled vertices) above this window. A grid's rows (the 1 M torus: 1,733)
+// keep their order, which beats a Morton curve there; a midpoint subdivision's does not.
+constexpr int kLocalitySamples = 20000;
+constexpr int kLocalityWindow = 16384;
 // A non-manifold edge held by more faces than this lists only one other face to the callers
 // that pair faces across an edge (SurfaceGraph::ForEachFaceAcross): dihedral angles mean
 // nothing there, and every pair of a 100,000-face "book" edge is 10^10 pairs.
