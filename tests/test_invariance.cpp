@@ -130,7 +130,8 @@ TEST(Invariance, ALargeMeshInAPoorOrderGivesTheSameBitsInAnyOrder) {
     nvv::SurfaceGraph g;
     std::vector<nvv::VertexResult> res;
     nvv::Summary sum;
-    ASSERT_TRUE(vcg::tri::NormalVectorVoting<TMesh>::Compute(p, WithK(3.0), res, sum, g).ok);
+    // k = 1.5: the order is what is tested, and the sanitizer builds run this mesh too.
+    ASSERT_TRUE(vcg::tri::NormalVectorVoting<TMesh>::Compute(p, WithK(1.5), res, sum, g).ok);
     // The graph handed back is the mesh's own, as a fresh build makes it.
     nvv::SurfaceGraph fresh;
     nvv::BuildSurfaceGraph(p, fresh);

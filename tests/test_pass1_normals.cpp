@@ -267,3 +267,49 @@ TEST(Pass1Classes, ThinningKeepsOnlyTheRidge) {
       EXPECT_GT(thin.sum.thinned, 0u);
     }
 }
+
+// Pass 1 votes first over the Euclidean ball and marches only where those votes do not make a
+// surface vertex with a margin (normal_votes.cpp). Beside a crease the Euclidean ball weighs the
+// other sheet more, so the votes it keeps are never those of a feature: every class, with the
+// thinning and the sharp edges after it, is the march's. Roofs from a shallow 20 deg fold to a
+// 175 deg fin (whose sheets are nearest in space), clean and noisy, the votes' classes alone
+// (sharp edges off) and the defaults; and a noisy cube with its corners.
+TEST(Pass1Classes, VotingFirstOverTheEuclideanBallKeepsTheMarchsClasses) {
+  int flooded = 0;
+  for (double alpha : {20.0, 45.0, 90.0, 150.0, 175.0})
+    for (double noise : {0.0, 0.05, 0.2})
+      for (double sharp : {0.0, 10.0}) {
+        SCOPED_TRACE(testing::Message() << "alpha " << alpha << " noise " << noise << " sharp " << sharp);
+        TMesh m;
+        nvv_shapes::Roof(m, alpha);
+        nvv_shapes::AddNoise(m, noise * nvv_shapes::MeanEdge(m), 7, nvv_shapes::AlongZ);
+        nvv::Params p = WithK(3.0);
+        p.sharpEdgeAngleDeg = sharp;
+        p.floodFirst = false;
+        const NvvRun march = RunNvv(m, p);
+        p.floodFirst = true;
+        const NvvRun first = RunNvv(m, p);
+        ASSERT_TRUE(march.st.ok && first.st.ok);
+        int differ = 0, surface = 0, same = 0;
+        for (std::size_t i = 0; i < m.vert.size(); ++i) {
+          differ += march.res[i].cls != first.res[i].cls;
+          if (march.res[i].cls != VertexClass::Surface) continue;
+          ++surface;
+          same += std::memcmp(march.res[i].normal, first.res[i].normal, sizeof(float) * 3) == 0;
+        }
+        EXPECT_EQ(differ, 0);
+        flooded += surface - same;
+      }
+  TMesh cube;
+  nvv_shapes::Cube(cube, 8, 17);
+  nvv_shapes::AddNoise(cube, 0.1 * nvv_shapes::MeanEdge(cube), 3, [](const vcg::Point3d& q) { return q / q.Norm(); });
+  nvv::Params p = WithK(3.0);
+  p.floodFirst = false;
+  const NvvRun march = RunNvv(cube, p);
+  p.floodFirst = true;
+  const NvvRun first = RunNvv(cube, p);
+  int differ = 0;
+  for (std::size_t i = 0; i < cube.vert.size(); ++i) differ += march.res[i].cls != first.res[i].cls;
+  EXPECT_EQ(differ, 0);
+  EXPECT_GT(flooded, 0);  // the flood did decide surface vertices (their normals are its own)
+}

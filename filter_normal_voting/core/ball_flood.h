@@ -10,7 +10,7 @@
 // where the march pays two planar unfoldings and an indexed-heap update per face corner.
 //
 // Scratch state is per instance (one per thread): a stamp per vertex, so a new flood resets in
-// O(1); the stamps are cleared only when the 32-bit counter wraps.
+// O(1); the stamps are cleared only when the 32-bit counter would wrap.
 #ifndef NVV_CORE_BALL_FLOOD_H
 #define NVV_CORE_BALL_FLOOD_H
 
@@ -33,9 +33,11 @@ class BallFlood {
   // Returns false when it stopped at a bound.
   template <class Blocked>
   bool Run(int source, double radius, int maxVertices, Blocked blocked) {
-    if (++current_ == 0) {  // the counter wrapped: old stamps could collide
+    // Two stamps per flood: current_ for a reached vertex, current_ + 1 for one tested outside.
+    current_ += 2;
+    if (current_ >= 0xfffffff0u) {  // the counter would wrap: old stamps could collide
       std::fill(stamp_.begin(), stamp_.end(), 0u);
-      current_ = 1;
+      current_ = 2;
     }
     reached_.clear();
     const Eigen::Vector3d& c = g_.pos[source];
@@ -51,12 +53,15 @@ class BallFlood {
       if (x != source && blocked(x)) continue;
       for (int i = g_.FaceBegin(x); i < g_.FaceEnd(x); ++i) {
         for (int y : g_.face[g_.vfList[i]]) {
-          if (stamp_[y] == current_) continue;
-          stamp_[y] = current_;  // seen: inside or outside, it is tested once
-          if ((g_.pos[y] - c).squaredNorm() > r2) continue;
+          if (stamp_[y] >= current_) continue;  // seen: inside or outside, it is tested once
+          if ((g_.pos[y] - c).squaredNorm() > r2) {
+            stamp_[y] = current_ + 1;
+            continue;
+          }
           if (int(reached_.size()) >= maxVertices) return false;
           faces += g_.FaceEnd(y) - g_.FaceBegin(y);
           if (faces > maxFaces) return false;
+          stamp_[y] = current_;
           reached_.push_back(y);
         }
       }
@@ -69,6 +74,9 @@ class BallFlood {
 
   // Reached vertices in breadth-first order; the source first.
   const std::vector<int>& Reached() const { return reached_; }
+  // Whether the last flood reached v (after a complete flood: v is within the radius and joined
+  // to the source inside the ball).
+  bool IsReached(int v) const { return stamp_[v] == current_; }
 
  private:
   const SurfaceGraph& g_;

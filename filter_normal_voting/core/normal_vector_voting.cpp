@@ -67,6 +67,8 @@ Pass1Settings SettingsFor(const SurfaceGraph& g, const Params& p, const NoiseEst
   s.epsilon = EpsilonFromAngle(p.creaseAngleDeg);
   s.eta = EpsilonFromAngle(p.cornerAngleDeg);
   s.signAware = p.classRule == ClassRule::SignAware && g.consistentlyOriented;
+  s.floodFirst = p.floodFirst && s.radius >= tuning::kFloodFirstMinK * g.meanEdge;
+  s.cosFloodTurn = std::cos(DegToRad(p.creaseAngleDeg * tuning::kFloodTurnOfCreaseAngle));
   s.maxNeighbourhood = p.maxNeighbourhood > 0 ? p.maxNeighbourhood
                                               : AutoNeighbourhoodCap(s.radius / g.meanEdge, std::size_t(g.VertexCount()));
   return s;

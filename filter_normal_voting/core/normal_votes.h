@@ -10,7 +10,14 @@
 //   class = argmax {S_s, eps S_c, eps eta S_n}                (Eq. 10)
 //
 // M_v holds the triangles whose three vertices are within g_m, plus v's one-ring always.
-// g_i is the mean of the three vertex distances (the centroid's distance, approximately).
+// In the paper's form (Params::floodFirst false) g_m and g_i are geodesic: the fast march of
+// par. 6.1, g_i the mean of the three vertex distances (the centroid's, approximately). By
+// default each vertex is voted first over the Euclidean ball (the vertices joined to v inside
+// |x - v| <= g_m, ball_flood.h) with g_i = |c_i - v|, and where those votes do not make v a
+// surface vertex with a margin, or a face of the ball turns from v's one-ring normal by more
+// than 3/4 of the crease angle, it is voted again over the geodesic neighbourhood
+// (normal_votes.cpp, VoteNormal): on a smooth sheet the two differ by g^3 / (24 R^2), while
+// beside a crease the Euclidean ball weighs the other sheet more.
 #ifndef NVV_CORE_NORMAL_VOTES_H
 #define NVV_CORE_NORMAL_VOTES_H
 
@@ -36,13 +43,12 @@ struct Pass1Settings {
   bool signAware = true;
   int maxNeighbourhood = 1024;
   double noiseSigma = 0;  // the noise along the normals (noise_estimate.h), in the mesh's units
+  bool floodFirst = true;  // Params::floodFirst
+  double cosFloodTurn = 0; // the most a face of a flooded ball may turn (tuning::kFloodTurnOfCreaseAngle)
 };
 
-// Runs pass 1 for vertex v; `march` is this thread's scratch. Writes cls, lambda, normal,
-// creaseTangent and cuspAngle of `r`.
-void VoteNormal(const SurfaceGraph& g, GeodesicMarch& march, int v, const Pass1Settings& s, VertexResult& r);
-
-// Pass 1 over every vertex: out[v] = VoteNormal(v), in parallel.
+// Pass 1 over every vertex, in parallel: out[v]'s cls, lambda, normal, creaseTangent and
+// cuspAngle.
 PassEnd VoteNormals(const SurfaceGraph& g, const Pass1Settings& s, int threads, PassProgress& progress,
                     std::vector<VertexResult>& out);
 

@@ -87,6 +87,10 @@ struct Params {
   // significant (sheet_fit.h, normal_vector_voting.h); false: always quadratic.
   bool cubicFit = true;
   SheetFitLevers levers;        // SheetQuadric only; not in the parameter table
+  // Pass 1 votes first over the Euclidean ball and marches only where those votes do not settle
+  // a surface vertex (normal_votes.cpp); false: the geodesic march everywhere, as in the paper.
+  // Not in the parameter table: for tests and for measuring what it changes.
+  bool floodFirst = true;
   ClassRule classRule = ClassRule::SignAware;
   double sigmaFraction = 1.0 / 3.0;  // Eq. 8: sigma = sigmaFraction * g_m (paper: 1/3)
   // Cap on the vertices one march may accept; 0 = automatic, AutoNeighbourhoodCap(). Bounds the
