@@ -352,9 +352,9 @@ if py:
                 py_same += 1
                 continue
             py_close += 1
-            claim(abs(a - b) <= 1e-4 * abs(b) and fmt(a) == fmt(b) and col.startswith("normal") and b < 0.001,
+            claim(abs(a - b) <= 1e-4 * abs(b) and fmt(a) == fmt(b) and col.startswith("normal") and b < 0.002,
                   "the Python scoring of the default's estimates gives the C++ tables' numbers, the few that differ "
-                  "in the sixth digit being normal angles below 0.001°")
+                  "in the sixth digit being normal angles below 0.002°")
     claim(py_same + py_close == len(cols) * sum(r["estimator"] in ("NVV quadric (default) k=3", "NVV quadric (default) k=5")
                                                 for r in grids + variants),
           "the Python scoring was checked on every row of the default at k = 3 and 5")
