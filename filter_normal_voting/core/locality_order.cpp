@@ -78,19 +78,10 @@ std::vector<int> FacesByLowestVertex(const SurfaceGraph& g) {
   return from;
 }
 
-// The vertex -> face lists (as SurfaceGraph::Build makes them) from the renumbered faces, and the
-// non-manifold edge groups renumbered and sorted again by key and face.
+// The vertex -> face lists from the renumbered faces, and the non-manifold edge groups renumbered
+// and sorted again by key and face.
 void RebuildAdjacency(SurfaceGraph& g, const std::vector<int>& vertexTo, const std::vector<int>& faceTo) {
-  const int n = g.VertexCount(), nf = g.FaceCount();
-  AssignOnHugePages(g.vfStart, std::size_t(n) + 1, 0);
-  for (const auto& f : g.face)
-    for (int j = 0; j < 3; ++j) ++g.vfStart[f[j] + 1];
-  for (int v = 0; v < n; ++v) g.vfStart[v + 1] += g.vfStart[v];
-  {
-    std::vector<int> fill(g.vfStart.begin(), g.vfStart.end() - 1);
-    for (int i = 0; i < nf; ++i)
-      for (int j = 0; j < 3; ++j) g.vfList[fill[g.face[i][j]]++] = i;
-  }
+  g.BuildVertexFaces();
   const std::size_t groups = g.edgeGroupKey.size();
   if (groups == 0) return;
   std::vector<std::pair<std::array<int, 2>, std::vector<int>>> renamed(groups);

@@ -88,8 +88,9 @@ bool Analyse(Eigen::Matrix3d V, Eigen::Vector3d m, const Pass1Settings& s, VoteT
   return true;
 }
 
-// Eq. 10's class, the normal oriented by the one-ring, and the crease's tangent and cusp.
-void Classify(const SurfaceGraph& g, int v, const Pass1Settings& s, const VoteTensor& t, VertexResult& r) {
+// Eq. 10's class, the normal oriented by the one-ring (ringNormal: SurfaceGraph::RingNormalSum),
+// and the crease's tangent and cusp.
+void Classify(const Eigen::Vector3d& ringNormal, const Pass1Settings& s, const VoteTensor& t, VertexResult& r) {
   for (int j = 0; j < 3; ++j) r.lambda[j] = float(std::max(0.0, t.l[j]));
   const double Ss = t.Ss(), Sc = t.Sc(), Sn = t.Sn();
   if (SurfaceByEq10(Ss, Sc, Sn, s.epsilon, s.eta)) r.cls = VertexClass::Surface;
@@ -98,7 +99,6 @@ void Classify(const SurfaceGraph& g, int v, const Pass1Settings& s, const VoteTe
 
   // Orient E1 with the area-weighted one-ring normal (falls back to the mean vote).
   Eigen::Vector3d n = t.E[0];
-  const Eigen::Vector3d ringNormal = g.RingNormalSum(v);
   const Eigen::Vector3d ref = ringNormal.squaredNorm() > 0 ? ringNormal : t.m;
   if (n.dot(ref) < 0) n = -n;
   for (int j = 0; j < 3; ++j) r.normal[j] = float(n[j]);
@@ -152,7 +152,7 @@ void VoteNormal(const SurfaceGraph& g, Pass1Scratch& sc, int v, const Pass1Setti
     if (!Analyse(V, m, s, t)) return;  // no usable triangle: stays Invalid (the march sees no more)
     const double margin = tuning::kFloodSurfaceMargin;
     if (leastCos >= s.cosFloodTurn && SurfaceByEq10(t.Ss(), t.Sc(), t.Sn(), margin * s.epsilon, margin * s.eta)) {
-      Classify(g, v, s, t, r);
+      Classify(ringSum, s, t, r);
       return;
     }
   }
@@ -162,7 +162,7 @@ void VoteNormal(const SurfaceGraph& g, Pass1Scratch& sc, int v, const Pass1Setti
     return (march.Distance(f[0]) + march.Distance(f[1]) + march.Distance(f[2])) / 3.0;
   }, V, m);
   if (!Analyse(V, m, s, t)) return;  // no usable triangle: stays Invalid
-  Classify(g, v, s, t, r);
+  Classify(ringSum, s, t, r);
 }
 
 }  // namespace

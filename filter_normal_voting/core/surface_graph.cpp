@@ -79,21 +79,27 @@ void SurfaceGraph::Build(std::vector<Eigen::Vector3d>&& positions, std::vector<s
   }
   maxArea = largest;
   degenerate = zeroArea;
-  // Vertex -> face adjacency, counting sort into CSR.
-  AssignOnHugePages(vfStart, n + 1, 0);
+  BuildVertexFaces();
+  unreferenced = 0;
+  for (int v = 0; v < n; ++v)
+    if (usable[v] && !Referenced(v)) ++unreferenced;
+  BuildEdges();
+}
+
+// Vertex -> face adjacency from the faces, counting sort into CSR: each vertex's faces in
+// increasing face order.
+void SurfaceGraph::BuildVertexFaces() {
+  const int n = VertexCount(), nf = FaceCount();
+  AssignOnHugePages(vfStart, std::size_t(n) + 1, 0);
   for (const auto& f : face)
     for (int j = 0; j < 3; ++j) ++vfStart[f[j] + 1];
   for (int v = 0; v < n; ++v) vfStart[v + 1] += vfStart[v];
-  AssignOnHugePages(vfList, vfStart[n], 0);
+  AssignOnHugePages(vfList, std::size_t(vfStart[n]), 0);
   std::vector<int> fill;
   ReserveOnHugePages(fill, n);
   fill.assign(vfStart.begin(), vfStart.end() - 1);
   for (int i = 0; i < nf; ++i)
     for (int j = 0; j < 3; ++j) vfList[fill[face[i][j]]++] = i;
-  unreferenced = 0;
-  for (int v = 0; v < n; ++v)
-    if (usable[v] && !Referenced(v)) ++unreferenced;
-  BuildEdges();
 }
 
 // A two-face edge used twice in the same direction means the orientation flips there.

@@ -138,6 +138,9 @@ struct SurfaceGraph {
   // True when v has an edge that only one face holds: v is on the mesh's border.
   bool OnBorder(int v) const;
 
+  // Fills vfStart and vfList from `face` (Build does; so does a renumbering, locality_order.h).
+  void BuildVertexFaces();
+
   // Fills the graph from positions and faces given as vertex indices (-1 marks a face to skip),
   // on `threads` threads (<= 0: all). The per-face loops run in parallel; every sum is then
   // taken serially in face order, so the graph is the same bits on any thread count.
